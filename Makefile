@@ -1,0 +1,25 @@
+# Every target creates the virtual environment when it is missing or stale, so a fresh
+# machine needs nothing but Python 3.11 and make.
+PYTHON ?= python3.11
+VENV := .venv
+STAMP := $(VENV)/.installed
+export MUJOCO_GL ?= disable
+
+.PHONY: run test test-slow bench clean
+
+$(STAMP): pyproject.toml constraints.txt
+	test -x $(VENV)/bin/python || $(PYTHON) -m venv $(VENV)
+	$(VENV)/bin/python -m pip install --quiet -c constraints.txt -e '.[test]'
+	touch $(STAMP)
+
+run: $(STAMP)
+	$(VENV)/bin/symbench run --model sdnn --robot hexa
+
+test: $(STAMP)
+	$(VENV)/bin/python -m pytest -q -n 2
+
+test-slow: $(STAMP)
+	$(VENV)/bin/python -m pytest -q -m slow
+
+clean:
+	rm -rf $(VENV)

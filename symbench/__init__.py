@@ -1,0 +1,8 @@
+"""symbench: a benchmark for learned dynamics of symmetric legged robots."""
+
+from importlib.metadata import PackageNotFoundError, version
+
+try:
+    __version__ = version("symbench")
+except PackageNotFoundError:  # running from a source tree that was never installed
+    __version__ = "0.0.0+unknown"

@@ -1,0 +1,1 @@
+"""The benchmark itself. Nothing in here imports a plugin."""

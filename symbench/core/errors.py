@@ -1,0 +1,33 @@
+"""Errors that the command line shows as one clear message instead of a traceback."""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Iterable
+
+
+class SymbenchError(Exception):
+    """A user-facing error: the message names what is wrong and, where it can, the fix."""
+
+
+class UnknownNameError(SymbenchError, KeyError):
+    """A name (model, robot, split, ...) that no plugin registered."""
+
+    def __init__(self, what: str, name: str, valid: Iterable[str]) -> None:
+        self.what, self.name = what, name
+        self.valid = sorted(set(valid))
+        close = difflib.get_close_matches(name, self.valid, n=3, cutoff=0.5)
+        hint = f"; did you mean {', '.join(close)}?" if close else ""
+        known = ", ".join(self.valid) if self.valid else "none registered"
+        super().__init__(f"unknown {what} '{name}'{hint} (known: {known})")
+
+    def __str__(self) -> str:  # KeyError would quote the message otherwise
+        return str(self.args[0])
+
+
+def lookup(what: str, name: str, table: dict):
+    """Return table[name] or raise UnknownNameError listing the closest valid names."""
+    try:
+        return table[name]
+    except KeyError:
+        raise UnknownNameError(what, name, table) from None
