@@ -1,0 +1,83 @@
+"""Robot specs: loading, validation, and leg frames consistent with the symmetry group."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from symbench.core.errors import SymbenchError
+from symbench.core.robots import load_robot, load_spec, parse_spec
+from symbench.core.scenario import Scenario
+
+ROBOTS = {"magneto": (4, 2), "hexa": (6, 6), "nona": (9, 9)}
+
+
+def rot_z(deg: float) -> np.ndarray:
+    a = np.radians(deg)
+    return np.array([[np.cos(a), -np.sin(a), 0], [np.sin(a), np.cos(a), 0], [0, 0, 1]])
+
+
+@pytest.mark.parametrize("name", ROBOTS)
+def test_spec_loads_with_group(name):
+    spec = load_robot(name)
+    n_legs, order = ROBOTS[name]
+    assert spec.n_legs == n_legs and spec.group.order == order
+    assert spec.leg_rotations().shape == (n_legs, 3, 3)
+    assert spec.leg_origins().shape == (n_legs, 3)
+    assert spec.torque_limits().shape == (3,)
+    assert len(spec.spec_hash()) == 64
+
+
+@pytest.mark.parametrize("name", ROBOTS)
+def test_leg_frames_rotate_onto_each_other_under_the_group(name):
+    """Rotating the base by the group's angle carries leg frame i onto leg frame i + shift."""
+    spec = load_robot(name)
+    rz = rot_z(spec.symmetry_angle_deg)
+    k, n = spec.symmetry_shift, spec.n_legs
+    rot, org = spec.leg_rotations(), spec.leg_origins()
+    for i in range(n):
+        j = (i + k) % n
+        np.testing.assert_allclose(rz @ rot[i], rot[j], atol=1e-12)
+        np.testing.assert_allclose(rz @ org[i], org[j], atol=1e-12)
+
+
+@pytest.mark.parametrize("name", ROBOTS)
+def test_legs_are_counter_clockwise(name):
+    org = load_robot(name).leg_origins()
+    ang = np.unwrap(np.arctan2(org[:, 1], org[:, 0]))
+    assert np.all(np.diff(ang) > 0)
+
+
+def test_bad_spec_names_the_entry(tmp_path):
+    (tmp_path / "robot.toml").write_text('name = "x"\nn_legs = 3\n')
+    with pytest.raises(SymbenchError, match="missing 'base'"):
+        load_spec(tmp_path)
+    with pytest.raises(SymbenchError, match="does not exist"):
+        load_spec(tmp_path / "nope")
+
+
+def test_wrong_mount_count_is_an_error():
+    import tomllib
+
+    from symbench.plugins.robots import ROBOTS_DIR
+
+    raw = tomllib.loads((ROBOTS_DIR / "hexa" / "robot.toml").read_text())
+    raw["mounts"]["angles_deg"] = raw["mounts"]["angles_deg"][:5]
+    with pytest.raises(SymbenchError, match="angles_deg"):
+        parse_spec(raw)
+
+
+def test_unknown_robot_suggests_names():
+    with pytest.raises(SymbenchError, match="hexa"):
+        load_robot("hexaa")
+
+
+def test_scenario_round_trip_and_validation():
+    s = Scenario("hexa", inclination_deg=60, heading_deg=90, yaw_deg=15, leg_order=(0, 2, 4, 1, 3, 5))
+    assert Scenario.from_dict(s.to_dict()) == s
+    with pytest.raises(SymbenchError, match="inclination"):
+        Scenario("hexa", inclination_deg=200)
+    with pytest.raises(SymbenchError, match="direction"):
+        Scenario("hexa", direction="up")
+    with pytest.raises(SymbenchError, match="unknown field"):
+        Scenario.from_dict({"robot": "hexa", "speed": 1})
