@@ -65,7 +65,7 @@ def cli() -> None:
 def report_plugin_problems() -> None:
     """Name every plugin that failed, on stderr, without stopping the command."""
     for problem in get_host().problems:
-        stderr.print(f"[yellow]warning:[/] {problem}")
+        stderr.print(f"[yellow]warning:[/] {problem}", soft_wrap=True)
 
 
 LIST_KINDS = (*KINDS, "datasets")
@@ -105,14 +105,17 @@ def plugins_command() -> None:
 
 
 def build_cli() -> click.Group:
-    """The command group with plugin commands added; a plugin that raises is named."""
-    get_host().call("symbench_commands", cli=cli)
-    return cli
+    """A fresh command group: the core commands plus those that plugins add."""
+    group = SymbenchGroup(name=cli.name, commands=dict(cli.commands), callback=cli.callback,
+                          params=cli.params, help=cli.help,
+                          context_settings=cli.context_settings)
+    get_host().call("symbench_commands", cli=group)
+    return group
 
 
 def main() -> None:
     try:
         build_cli()(prog_name="symbench")
     except SymbenchError as exc:  # raised outside a command, e.g. while adding commands
-        stderr.print(f"[red]error:[/] {exc}")
+        stderr.print(f"[red]error:[/] {exc}", soft_wrap=True)
         sys.exit(1)

@@ -58,6 +58,11 @@ class PluginHost:
         self.pm.register(plugin, name=name)
         self.info[name] = PluginInfo(name, distribution or "(in-process)", version, builtin)
 
+    def report(self, problem: PluginProblem) -> None:
+        """Remember a plugin's failure once, however often the hook is called."""
+        if problem not in self.problems:
+            self.problems.append(problem)
+
     def load_entry_points(self, allowed: str | None = None) -> None:
         """Load the `symbench` entry points, built-ins always, others as SYMBENCH_PLUGINS says."""
         allowed = os.environ.get(ENV_VAR, "all") if allowed is None else allowed
@@ -71,7 +76,7 @@ class PluginHost:
             try:
                 plugin = ep.load()
             except Exception as exc:  # a broken plugin must not take the others down
-                self.problems.append(PluginProblem(ep.name, "import", _describe(exc)))
+                self.report(PluginProblem(ep.name, "import", _describe(exc)))
                 continue
             self.register(plugin, ep.name, dist, version, builtin)
 
@@ -83,7 +88,7 @@ class PluginHost:
             try:
                 result = impl.function(**args)
             except Exception as exc:
-                self.problems.append(PluginProblem(impl.plugin_name, hook, _describe(exc)))
+                self.report(PluginProblem(impl.plugin_name, hook, _describe(exc)))
                 continue
             if result is not None:
                 results.append((impl.plugin_name, result))

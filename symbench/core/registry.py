@@ -30,12 +30,12 @@ def collect(kind: str, host: PluginHost | None = None) -> dict[str, Any]:
     for plugin, entries in host.call(hook):
         for entry in entries:
             if not isinstance(entry, entry_type):
-                host.problems.append(PluginProblem(
+                host.report(PluginProblem(
                     plugin, hook, f"returned {type(entry).__name__}, expected {entry_type.__name__}"))
                 continue
             key = _key(entry)
             if key in table:
-                host.problems.append(PluginProblem(
+                host.report(PluginProblem(
                     plugin, hook, f"{kind[:-1]} '{key}' is already registered by '{owner[key]}'"))
                 continue
             table[key], owner[key] = entry, plugin

@@ -213,9 +213,10 @@ def vector_target(n_legs: int) -> FlatLayout:
 class GraphLayout:
     """The `body_graph` view: bodies as nodes, joints as edges, base state as global.
 
-    Nodes: the base, then per leg coxa, femur, tibia and foot links (1 + 4 n nodes). Edges:
-    the three actuated joints of each leg, parent -> child (3 n edges). The target is one
-    torque per edge.
+    Nodes: the base, then per leg the coxa, femur and tibia links (1 + 3 n nodes; the foot
+    and its passive ankle belong to the tibia node, which carries the contact and magnet
+    flags). Edges: the three actuated joints of each leg, parent -> child (3 n edges). The
+    target is one torque per edge.
     """
 
     n_legs: int
@@ -225,7 +226,7 @@ class GraphLayout:
 
     @property
     def n_nodes(self) -> int:
-        return 1 + 4 * self.n_legs
+        return 1 + 3 * self.n_legs
 
     @property
     def n_edges(self) -> int:
@@ -239,7 +240,7 @@ class GraphLayout:
         """(n_edges, 2) sender, receiver node indices; edge 3 i + j is joint j of leg i."""
         pairs = []
         for i in range(self.n_legs):
-            chain = [0] + [1 + 4 * i + k for k in range(4)]
+            chain = [0] + [1 + 3 * i + k for k in range(3)]
             pairs += [(chain[j], chain[j + 1]) for j in range(3)]
         return np.array(pairs, dtype=np.int64)
 
