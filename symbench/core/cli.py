@@ -26,6 +26,7 @@ from symbench.core.registry import KINDS, collect
 LAZY_COMMANDS: dict[str, str] = {
     "run": "symbench.core.run_command:run",
     "bench": "symbench.core.bench_cli:bench",
+    "leaderboard": "symbench.core.leaderboard_cli:leaderboard",
 }
 
 stderr = Console(stderr=True)

@@ -8,37 +8,18 @@ import json
 import pytest
 
 from symbench.core.errors import SymbenchError
-from symbench.core.provenance import git_commit, hardware, library_versions
+from symbench.core.provenance import hardware, library_versions
 from symbench.core.results import check_dataset_hash, read_record, write_record
 
 HASH = "ab" * 32
 
 
-def valid_record() -> dict:
-    return {
-        "schema_version": 1,
-        "created": "2026-11-22T00:00:00Z",
-        "model": {"name": "sdnn", "backend": "torch", "view": "leg_grouped", "variant": "acc",
-                  "equivariant": True, "hyperparameters": {"latent": 128},
-                  "learning_rate": 5e-4, "parameters": 1234},
-        "robot": "hexa",
-        "dataset": {"id": "hexa-climb-smoke-v1", "content_hash": HASH,
-                    "robot_spec_hash": "cd" * 32, "preset": "smoke"},
-        "split": "iid",
-        "seed": 0,
-        "samples": {"train": 10, "val": 2, "test": 3, "train_trajectories": 2,
-                    "val_trajectories": 1, "test_trajectories": 1},
-        "training": {"epochs": 3, "best_epoch": 2, "stopped_early": False,
-                     "best_val_loss": 0.5, "batch_size": 64},
-        "metrics": {"torque-error": {"rmse": 0.1}},
-        "timings_s": {"train": 1.0},
-        "hardware": hardware(),
-        "versions": library_versions(),
-        "git_commit": git_commit(),
-    }
+@pytest.fixture
+def valid_record(make_record):
+    return make_record
 
 
-def test_round_trip(tmp_path):
+def test_round_trip(valid_record, tmp_path):
     path = tmp_path / "r.json"
     written = write_record(valid_record(), path)
     assert read_record(path) == written
@@ -53,7 +34,7 @@ def test_provenance_is_filled():
 
 
 @pytest.mark.parametrize("field", ["model", "dataset", "seed", "git_commit"])
-def test_missing_field_is_rejected_by_name(tmp_path, field):
+def test_missing_field_is_rejected_by_name(valid_record, tmp_path, field):
     record = valid_record()
     del record[field]
     with pytest.raises(SymbenchError, match=f"{field}: Field required"):
@@ -63,7 +44,7 @@ def test_missing_field_is_rejected_by_name(tmp_path, field):
         read_record(tmp_path / "bad.json")
 
 
-def test_nested_missing_field_and_bad_values(tmp_path):
+def test_nested_missing_field_and_bad_values(valid_record, tmp_path):
     record = valid_record()
     del record["model"]["parameters"]
     with pytest.raises(SymbenchError, match="model.parameters: Field required"):
@@ -79,7 +60,7 @@ def test_nested_missing_field_and_bad_values(tmp_path):
     assert not (tmp_path / "r.json").exists()
 
 
-def test_foreign_schema_version_and_garbage(tmp_path):
+def test_foreign_schema_version_and_garbage(valid_record, tmp_path):
     record = valid_record()
     record["schema_version"] = 99
     (tmp_path / "v.json").write_text(json.dumps(record))
@@ -90,7 +71,7 @@ def test_foreign_schema_version_and_garbage(tmp_path):
         read_record(tmp_path / "g.json")
 
 
-def test_wrong_dataset_hash_is_rejected(tmp_path):
+def test_wrong_dataset_hash_is_rejected(valid_record, tmp_path):
     record = write_record(valid_record(), tmp_path / "r.json")
     check_dataset_hash(record, HASH)
     with pytest.raises(SymbenchError, match="now has hash"):

@@ -1,0 +1,158 @@
+"""Aggregate result records into leaderboard tables (Markdown + CSV) and plots.
+
+Records are grouped by robot, split, model and backend; metrics are averaged over seeds with
+their standard deviation, and each (robot, split) table is ranked by test torque RMSE.
+Records from different dataset versions or schema versions are never mixed: comparing
+numbers from two datasets would be meaningless, so the aggregation refuses and says why.
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from collections.abc import Iterable
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from symbench.core.atomic import write_bytes_atomic, write_text_atomic
+from symbench.core.errors import SymbenchError
+from symbench.core.results import ResultRecord, read_record
+
+MIN_SEEDS = 3
+RANK_METRIC = ("torque-error", "rmse")
+# (evaluator, metric) pairs shown in the tables when present, with their column names
+COLUMNS = {
+    ("torque-error", "rmse"): "rmse_Nm",
+    ("torque-error", "nrmse"): "nrmse",
+    ("equivariance", "max_rel_error"): "equiv_err",
+    ("invariance", "max_rel_change"): "invar_change",
+    ("closed-loop", "success_rate"): "cl_success",
+    ("closed-loop", "time_to_failure_s"): "cl_ttf_s",
+}
+
+
+def load_records(folder: Path) -> list[tuple[Path, ResultRecord]]:
+    """Every *.json record below `folder`, validated; sorted by path for reproducibility."""
+    paths = sorted(Path(folder).rglob("*.json"))
+    if not paths:
+        raise SymbenchError(f"no result records (*.json) under {folder}")
+    return [(p, read_record(p)) for p in paths]
+
+
+def check_consistent(records: Iterable[tuple[Path, ResultRecord]]) -> None:
+    """One dataset content hash per robot and one schema version overall, or an error."""
+    hashes: dict[str, dict[str, Path]] = defaultdict(dict)
+    versions: dict[int, Path] = {}
+    for path, r in records:
+        hashes[r.robot].setdefault(r.dataset.content_hash, path)
+        versions.setdefault(r.schema_version, path)
+    for robot, by_hash in hashes.items():
+        if len(by_hash) > 1:
+            examples = ", ".join(f"{p.name} ({h[:12]}...)" for h, p in by_hash.items())
+            raise SymbenchError(f"records for {robot} come from {len(by_hash)} different datasets "
+                                f"({examples}); aggregate records of one dataset version only")
+    if len(versions) > 1:
+        raise SymbenchError("records mix schema versions "
+                            + ", ".join(f"{v} ({p.name})" for v, p in versions.items()))
+
+
+def _flat(record: ResultRecord) -> dict:
+    row = {"robot": record.robot, "split": record.split, "model": record.model.name,
+           "backend": record.model.backend, "seed": record.seed,
+           "dataset": record.dataset.id, "parameters": record.model.parameters}
+    for (evaluator, metric), column in COLUMNS.items():
+        value = record.metrics.get(evaluator, {}).get(metric)
+        row[column] = float(value) if isinstance(value, (int, float)) else np.nan
+    return row
+
+
+def aggregate(records: list[tuple[Path, ResultRecord]]) -> pd.DataFrame:
+    """Mean and standard deviation over seeds per (robot, split, model, backend), ranked."""
+    check_consistent(records)
+    runs = pd.DataFrame([_flat(r) for _, r in records])
+    duplicate = runs.duplicated(["robot", "split", "model", "backend", "seed"])
+    if duplicate.any():
+        first = runs[duplicate].iloc[0]
+        raise SymbenchError(f"two records for the same run: {first['robot']} {first['split']} "
+                            f"{first['model']} {first['backend']} seed {first['seed']}")
+    keys = ["robot", "split", "model", "backend"]
+    metrics = [c for c in COLUMNS.values() if runs[c].notna().any()]
+    grouped = runs.groupby(keys, sort=True)
+    table = grouped.agg(seeds=("seed", "nunique"), parameters=("parameters", "first"),
+                        dataset=("dataset", "first"))
+    for m in metrics:
+        table[f"{m}_mean"] = grouped[m].mean()
+        table[f"{m}_std"] = grouped[m].std(ddof=1)
+    table = table.reset_index()
+    table["rank"] = table.groupby(["robot", "split"])["rmse_Nm_mean"].rank(method="min").astype(int)
+    return table.sort_values(["robot", "split", "rank", "model", "backend"]).reset_index(drop=True)
+
+
+def _cell(mean: float, std: float) -> str:
+    if np.isnan(mean):
+        return "-"
+    return f"{mean:.4g}" if np.isnan(std) else f"{mean:.4g} ± {std:.2g}"
+
+
+def markdown(table: pd.DataFrame, robot: str) -> str:
+    """One robot's leaderboard: a section per split, rows ranked by RMSE."""
+    metrics = [c[: -len("_mean")] for c in table.columns if c.endswith("_mean")]
+    lines = [f"# {robot}", ""]
+    for split, part in table[table.robot == robot].groupby("split", sort=True):
+        lines += [f"## {split}", "",
+                  "| rank | model | backend | seeds | " + " | ".join(metrics) + " |",
+                  "|---|---|---|---|" + "---|" * len(metrics)]
+        for _, row in part.iterrows():
+            cells = [_cell(row[f"{m}_mean"], row[f"{m}_std"]) for m in metrics]
+            flag = "" if row.seeds >= MIN_SEEDS else f" (<{MIN_SEEDS})"
+            lines.append(f"| {row['rank']} | {row.model} | {row.backend} | {row.seeds}{flag} | "
+                         + " | ".join(cells) + " |")
+        lines.append("")
+    return "\n".join(lines)
+
+
+def sample_efficiency_plot(table: pd.DataFrame, robot: str, path: Path) -> bool:
+    """Test RMSE against training fraction, one line per model; False when no fractions."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    rows = table[(table.robot == robot) & table.split.str.startswith("fraction-")].copy()
+    if rows.empty:
+        return False
+    rows["fraction"] = rows.split.str.removeprefix("fraction-").astype(float)
+    fig, ax = plt.subplots(figsize=(5, 3.5), dpi=120)
+    for (model, backend), part in rows.groupby(["model", "backend"], sort=True):
+        part = part.sort_values("fraction")
+        ax.errorbar(part.fraction, part.rmse_Nm_mean, yerr=part.rmse_Nm_std.fillna(0),
+                    marker="o", capsize=3, label=f"{model} ({backend})")
+    ax.set(xlabel="fraction of training trajectories", ylabel="test torque RMSE (N m)",
+           title=f"{robot}: sample efficiency", yscale="log")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = path.with_suffix(".tmp.png")
+    fig.savefig(tmp, metadata={"Software": None})
+    plt.close(fig)
+    write_bytes_atomic(path, tmp.read_bytes())
+    tmp.unlink()
+    return True
+
+
+def write_leaderboard(results: Path, out: Path) -> list[Path]:
+    """Aggregate the records under `results` into tables and plots under `out`."""
+    table = aggregate(load_records(results))
+    written = []
+    csv = out / "leaderboard.csv"
+    write_text_atomic(csv, table.to_csv(index=False, float_format="%.6g"))
+    written.append(csv)
+    for robot in sorted(table.robot.unique()):
+        md = out / f"{robot}.md"
+        write_text_atomic(md, markdown(table, robot))
+        written.append(md)
+        png = out / f"{robot}-sample-efficiency.png"
+        if sample_efficiency_plot(table, robot, png):
+            written.append(png)
+    return written

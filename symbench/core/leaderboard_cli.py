@@ -1,0 +1,20 @@
+"""`symbench leaderboard`: tables and plots from result records."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+
+
+@click.command("leaderboard")
+@click.option("--results", type=click.Path(path_type=Path), default=Path("results"),
+              show_default=True, help="Folder of result records (searched recursively).")
+@click.option("--out", type=click.Path(path_type=Path), default=Path("leaderboards"),
+              show_default=True, help="Where the Markdown, CSV and PNG files go.")
+def leaderboard(results: Path, out: Path) -> None:
+    """Aggregate records (mean ± std over seeds), rank by test RMSE, write tables."""
+    from symbench.core.leaderboard import write_leaderboard
+
+    for path in write_leaderboard(results, out):
+        click.echo(f"wrote {path}")

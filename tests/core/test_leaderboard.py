@@ -1,0 +1,59 @@
+"""Leaderboard aggregation: mean ± std over seeds, ranking, refusal to mix datasets."""
+
+from __future__ import annotations
+
+import pytest
+
+from symbench.core.errors import SymbenchError
+from symbench.core.leaderboard import aggregate, load_records, write_leaderboard
+from symbench.core.results import write_record
+
+
+def write_runs(folder, make_record, runs):
+    for i, kwargs in enumerate(runs):
+        write_record(make_record(**kwargs), folder / f"r{i}.json")
+
+
+def test_mean_std_and_rank(tmp_path, make_record):
+    runs = [dict(model="sdnn", seed=s, rmse=r) for s, r in enumerate([0.1, 0.2, 0.3])]
+    runs += [dict(model="ffnn", seed=s, rmse=r) for s, r in enumerate([1.0, 1.0, 1.3])]
+    write_runs(tmp_path, make_record, runs)
+    table = aggregate(load_records(tmp_path))
+    assert list(table.model) == ["sdnn", "ffnn"]
+    assert list(table["rank"]) == [1, 2]
+    sdnn = table.iloc[0]
+    assert sdnn.seeds == 3
+    assert sdnn.rmse_Nm_mean == pytest.approx(0.2)
+    assert sdnn.rmse_Nm_std == pytest.approx(0.1)
+
+
+def test_refuses_to_mix_dataset_versions(tmp_path, make_record):
+    write_runs(tmp_path, make_record, [dict(seed=0), dict(seed=1, content_hash="ef" * 32)])
+    with pytest.raises(SymbenchError, match="2 different datasets"):
+        aggregate(load_records(tmp_path))
+
+
+def test_refuses_duplicate_runs(tmp_path, make_record):
+    write_runs(tmp_path, make_record, [dict(seed=0), dict(seed=0, rmse=0.3)])
+    with pytest.raises(SymbenchError, match="two records for the same run"):
+        aggregate(load_records(tmp_path))
+
+
+def test_tables_and_plot_regenerate_identically(tmp_path, make_record):
+    runs = [dict(model=m, split=f"fraction-{f}", seed=s, rmse=r * (1 + s / 10) / f)
+            for m, r in (("sdnn", 0.1), ("ffnn", 0.5)) for f in (0.1, 0.5) for s in range(3)]
+    runs += [dict(robot="nona", model="sdnn", seed=s) for s in range(2)]
+    write_runs(tmp_path / "records", make_record, runs)
+    first = write_leaderboard(tmp_path / "records", tmp_path / "out")
+    names = sorted(p.name for p in first)
+    assert names == ["hexa-sample-efficiency.png", "hexa.md", "leaderboard.csv", "nona.md"]
+    before = {p.name: p.read_bytes() for p in first if p.suffix != ".png"}
+    second = write_leaderboard(tmp_path / "records", tmp_path / "out")
+    assert {p.name: p.read_bytes() for p in second if p.suffix != ".png"} == before
+    nona = (tmp_path / "out" / "nona.md").read_text()
+    assert "| 1 | sdnn | torch | 2 (<3) |" in nona  # too few seeds is flagged
+
+
+def test_empty_folder_is_a_clear_error(tmp_path):
+    with pytest.raises(SymbenchError, match="no result records"):
+        load_records(tmp_path)
