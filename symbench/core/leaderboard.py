@@ -15,8 +15,9 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from symbench.core.atomic import write_bytes_atomic, write_text_atomic
+from symbench.core.atomic import write_text_atomic
 from symbench.core.errors import SymbenchError
+from symbench.core.plots import sample_efficiency_png
 from symbench.core.results import ResultRecord, read_record
 
 MIN_SEEDS = 3
@@ -114,30 +115,16 @@ def markdown(table: pd.DataFrame, robot: str) -> str:
 
 def sample_efficiency_plot(table: pd.DataFrame, robot: str, path: Path) -> bool:
     """Test RMSE against training fraction, one line per model; False when no fractions."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
     rows = table[(table.robot == robot) & table.split.str.startswith("fraction-")].copy()
     if rows.empty:
         return False
     rows["fraction"] = rows.split.str.removeprefix("fraction-").astype(float)
-    fig, ax = plt.subplots(figsize=(5, 3.5), dpi=120)
+    curves = {}
     for (model, backend), part in rows.groupby(["model", "backend"], sort=True):
         part = part.sort_values("fraction")
-        ax.errorbar(part.fraction, part.rmse_Nm_mean, yerr=part.rmse_Nm_std.fillna(0),
-                    marker="o", capsize=3, label=f"{model} ({backend})")
-    ax.set(xlabel="fraction of training trajectories", ylabel="test torque RMSE (N m)",
-           title=f"{robot}: sample efficiency", yscale="log")
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = path.with_suffix(".tmp.png")
-    fig.savefig(tmp, metadata={"Software": None})
-    plt.close(fig)
-    write_bytes_atomic(path, tmp.read_bytes())
-    tmp.unlink()
+        curves[f"{model} ({backend})"] = (part.fraction.tolist(), part.rmse_Nm_mean.tolist(),
+                                          part.rmse_Nm_std.fillna(0).tolist())
+    sample_efficiency_png(curves, f"{robot}: sample efficiency", path)
     return True
 
 

@@ -1,0 +1,102 @@
+"""What an evaluator receives, and running the chosen evaluators one by one.
+
+Evaluators see a trained model only through `predict`, so PyTorch and JAX models are judged
+by the same code. Evaluators that transform test scenes (equivariance, invariance) work on
+raw states and recompute the model's own view, so every representation gets the same test.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from symbench.core.arrays import ViewArrays
+from symbench.core.entries import ModelEntry
+from symbench.core.errors import SymbenchError
+from symbench.core.registry import evaluator
+
+Predict = Callable[[dict[str, np.ndarray]], np.ndarray]
+
+
+@dataclass(frozen=True)
+class TrainedOnSplit:
+    """A model of the same architecture trained on some split, with that split's test set."""
+
+    split: str
+    predict: Predict
+    test: ViewArrays
+
+
+@dataclass
+class EvaluationContext:
+    """Everything an evaluator may use. `retrain(split)` trains the same model on another split."""
+
+    entry: ModelEntry
+    dataset: Any  # symbench.core.data.dataset.Dataset
+    split: str
+    seed: int
+    predict: Predict
+    test: ViewArrays
+    test_trajectories: np.ndarray
+    output_dir: Path
+    retrain: Callable[[str], TrainedOnSplit]
+    max_samples: int = 4096  # cap on samples for the transform-based evaluators
+    _trained: dict[str, TrainedOnSplit] = field(default_factory=dict, repr=False)
+
+    @property
+    def robot(self):
+        return self.dataset.spec
+
+    def predictions(self) -> np.ndarray:
+        return self.on_split(self.split).predict(self.test.inputs)
+
+    def on_split(self, split: str) -> TrainedOnSplit:
+        """This run's model for its own split; a retrained one (cached) for any other."""
+        if split == self.split:
+            return TrainedOnSplit(split, self.predict, self.test)
+        if split not in self._trained:
+            self._trained[split] = self.retrain(split)
+        return self._trained[split]
+
+    def test_raw(self) -> tuple[dict[str, np.ndarray], np.ndarray]:
+        """Raw columns of the test trajectories (whole trajectories, up to `max_samples` rows)."""
+        raw, ids = self.dataset.raw()
+        keep = np.flatnonzero(np.isin(ids, self.test_trajectories))[: self.max_samples]
+        return {k: v[keep] for k, v in raw.items()}, ids[keep]
+
+    def predict_raw(self, raw: dict[str, np.ndarray], ids: np.ndarray) -> np.ndarray:
+        """The model's torques for raw states, through its own view."""
+        from symbench.core.data.views import build_view
+
+        arrays = build_view(raw, ids, self.dataset.frames, self.entry.view, self.entry.variant)
+        return self.predict(arrays.inputs)
+
+
+def rmse(pred: np.ndarray, target: np.ndarray, axis: Any = None) -> np.ndarray:
+    return np.sqrt(np.mean((np.asarray(pred) - np.asarray(target)) ** 2, axis=axis))
+
+
+def relative_change(a: np.ndarray, b: np.ndarray) -> float:
+    """max |a - b| / max |b|: how far two torque predictions differ, relative to their size."""
+    scale = float(np.max(np.abs(b)))
+    return float(np.max(np.abs(a - b)) / scale) if scale > 0 else float(np.max(np.abs(a - b)))
+
+
+def run_evaluators(names: list[str], context: EvaluationContext,
+                   progress: Callable[[str], None] = lambda name: None) -> dict[str, dict]:
+    """Each evaluator's metrics; one that raises is named in the error."""
+    results: dict[str, dict] = {}
+    for name in names:
+        entry = evaluator(name)
+        progress(name)
+        try:
+            results[name] = entry.evaluate(context)
+        except SymbenchError:
+            raise
+        except Exception as exc:
+            raise SymbenchError(f"evaluator '{name}' failed: {type(exc).__name__}: {exc}") from exc
+    return results

@@ -1,0 +1,31 @@
+"""Test torque RMSE, overall and per joint type, and normalized by the targets' spread."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from symbench.core.evaluation import EvaluationContext, TrainedOnSplit, rmse
+from symbench.core.schema import JOINTS
+
+NAME = "torque-error"
+DESCRIPTION = "test torque RMSE (N m) overall and per joint type; NRMSE = RMSE / target std"
+
+
+def torque_metrics(pred: np.ndarray, target: np.ndarray) -> dict[str, float]:
+    per_joint = rmse(pred, target, axis=(0, 1))
+    overall = float(rmse(pred, target))
+    return {
+        "rmse": overall,
+        **{f"rmse_{j}": float(v) for j, v in zip(JOINTS, per_joint)},
+        "nrmse": overall / float(np.std(target)),
+        "samples": int(len(target)),
+    }
+
+
+def split_metrics(trained: TrainedOnSplit) -> dict[str, float]:
+    """Torque metrics of a model trained on some split, on that split's test set."""
+    return torque_metrics(trained.predict(trained.test.inputs), trained.test.target)
+
+
+def evaluate(context: EvaluationContext) -> dict[str, float]:
+    return torque_metrics(context.predictions(), context.test.target)
