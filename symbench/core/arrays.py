@@ -12,7 +12,7 @@ alike. Inputs differ by view:
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -27,6 +27,8 @@ class ViewArrays:
     inputs: dict[str, np.ndarray]
     target: np.ndarray  # (N, n_legs, 3) joint torques, N m
     trajectory: np.ndarray  # (N,) index of the trajectory each sample comes from
+    # column names of each input's last axis (per-leg features for leg_grouped)
+    feature_names: dict[str, tuple[str, ...]] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         n = len(self.target)
@@ -45,4 +47,4 @@ class ViewArrays:
         """The samples at `index` (a boolean mask or integer indices)."""
         return ViewArrays(self.view, self.variant, self.n_legs,
                           {k: v[index] for k, v in self.inputs.items()},
-                          self.target[index], self.trajectory[index])
+                          self.target[index], self.trajectory[index], self.feature_names)

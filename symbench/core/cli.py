@@ -27,6 +27,8 @@ LAZY_COMMANDS: dict[str, str] = {
     "run": "symbench.core.run_command:run",
     "bench": "symbench.core.bench_cli:bench",
     "leaderboard": "symbench.core.leaderboard_cli:leaderboard",
+    "sweep": "symbench.core.sweep_cli:sweep",
+    "data": "symbench.core.data.cli:data",
 }
 
 stderr = Console(stderr=True)

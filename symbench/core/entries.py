@@ -52,7 +52,11 @@ class EvaluatorEntry:
 
 @dataclass(frozen=True)
 class SplitEntry:
-    """A split: `assign(scenarios, seed)` marks each trajectory train, val or test."""
+    """A split: `assign(context)` labels each trajectory train, val, test or unused.
+
+    `context` is a `symbench.core.splits.SplitContext` (scenarios, trajectory ids, sample
+    counts, the robot's rotation order and the seed); see CONTRIBUTING.md.
+    """
 
     name: str
     assign: Callable[..., Any]

@@ -1,0 +1,205 @@
+"""`symbench data generate`: simulate a preset's scenario grid into a cached dataset.
+
+Each trajectory is simulated in a worker process and written (Parquet, then a small record
+JSON) the moment it finishes, both atomically; metadata.json is written last. An
+interrupted run therefore resumes: a trajectory whose record matches the scenario, the
+robot spec and the library versions, and whose file matches its SHA-256, is kept; the rest
+is simulated again. A trajectory in which the robot detaches is recorded as failed and left
+out of the dataset. Simulation is deterministic, so the files and the content hash are too.
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import time
+from collections.abc import Callable, Sequence
+from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from symbench.core.data.metadata import dataset_dir, library_versions, write_metadata
+from symbench.core.data.presets import RECORD_PERIOD, dataset_id, preset, rotation_order
+from symbench.core.data.storage import atomic_write_json, read_json, sha256_file, write_trajectory
+from symbench.core.errors import SymbenchError
+from symbench.core.raw import SCHEMA_VERSION, validate_raw
+from symbench.core.scenario import Scenario
+
+Simulator = Callable[..., Any]  # (scenario, record_period=...) -> Rollout
+
+
+@dataclass(frozen=True)
+class Task:
+    index: int
+    scenario: dict[str, Any]
+    root: Path
+    n_legs: int
+    key: dict[str, Any]  # what a finished record must match to be reused
+    simulator: Simulator
+
+
+@dataclass(frozen=True)
+class GenerationReport:
+    dataset_id: str
+    root: Path
+    n_trajectories: int
+    n_failed: int
+    n_samples: int
+    n_simulated: int  # this run; the others were kept from an earlier run
+    seconds: float
+    content_hash: str
+    failures: list[dict[str, Any]]
+
+
+def default_simulator() -> Simulator:
+    try:
+        from symbench.core.sim.rollout import simulate
+    except ImportError as exc:
+        raise SymbenchError(f"the simulator is not available ({exc}); "
+                            "symbench.core.sim.rollout.simulate is needed to generate data") from None
+    return simulate
+
+
+def record_path(root: Path, index: int) -> Path:
+    return root / "records" / f"{index:05d}.json"
+
+
+def trajectory_file(index: int) -> str:
+    return f"trajectories/{index:05d}.parquet"
+
+
+def run_task(task: Task) -> dict[str, Any]:
+    """Simulate one scenario, write its file and record; return the record."""
+    rollout = task.simulator(Scenario.from_dict(task.scenario), record_period=task.key["record_period_s"])
+    record: dict[str, Any] = {"id": task.index, "scenario": task.scenario, "key": task.key}
+    if not rollout.attached:
+        record.update(status="failed", failure=rollout.failure or "the robot detached")
+    else:
+        source = f"trajectory {task.index} ({task.scenario})"
+        n_steps = validate_raw(rollout.arrays, task.n_legs, source)
+        if n_steps < 2:
+            raise SymbenchError(f"{source}: {n_steps} recorded step(s), at least 2 are needed")
+        sha = write_trajectory(task.root / trajectory_file(task.index), rollout.arrays, task.n_legs)
+        record.update(status="ok", file=trajectory_file(task.index), sha256=sha, n_steps=n_steps)
+    atomic_write_json(record_path(task.root, task.index), record)
+    return record
+
+
+def finished_record(task: Task) -> dict[str, Any] | None:
+    """The record of an earlier run if it is still valid for `task`, else None."""
+    path = record_path(task.root, task.index)
+    if not path.is_file():
+        return None
+    try:
+        record = read_json(path, "generation record")
+    except SymbenchError:
+        return None
+    if record.get("scenario") != task.scenario or record.get("key") != task.key:
+        return None
+    if record.get("status") == "ok":
+        file = task.root / record["file"]
+        if not file.is_file() or sha256_file(file) != record["sha256"]:
+            return None
+    return record
+
+
+def _run_all(tasks: Sequence[Task], workers: int, on_done: Callable[[dict], None]) -> None:
+    if workers <= 1 or len(tasks) <= 1:
+        for task in tasks:
+            on_done(run_task(task))
+        return
+    pool = ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn"))
+    try:
+        pending: set[Future] = {pool.submit(run_task, t) for t in tasks}
+        while pending:
+            done, pending = wait(pending, return_when=FIRST_COMPLETED)
+            for future in done:
+                on_done(future.result())
+    finally:
+        pool.shutdown(wait=True, cancel_futures=True)
+
+
+def generate(robot: str, preset_name: str = "small", workers: int = 1,
+             simulator: Simulator | None = None, show_progress: bool = True,
+             scenarios: Sequence[Scenario] | None = None,
+             id_override: str | None = None) -> GenerationReport:
+    """Generate (or resume) the dataset of `preset_name` for `robot` in the cache.
+
+    `scenarios` and `id_override` replace the preset's grid and id (tests use tiny grids).
+    """
+    from symbench.core.robots import load_robot
+
+    spec = load_robot(robot)
+    grid = preset(preset_name)
+    did = id_override or dataset_id(robot, preset_name)
+    order = rotation_order(spec.group)
+    scenarios = list(scenarios) if scenarios is not None else grid.scenarios(robot, spec.n_legs, order)
+    root = dataset_dir(did)
+    key = {"raw_schema_version": SCHEMA_VERSION, "robot_spec_hash": spec.spec_hash(),
+           "record_period_s": RECORD_PERIOD, "versions": library_versions()}
+    sim = simulator or default_simulator()
+    tasks = [Task(i, s.to_dict(), root, spec.n_legs, key, sim) for i, s in enumerate(scenarios)]
+    records: dict[int, dict[str, Any]] = {}
+    for task in tasks:
+        if (rec := finished_record(task)) is not None:
+            records[task.index] = rec
+    todo = [t for t in tasks if t.index not in records]
+
+    start = time.perf_counter()
+    with _progress(show_progress, len(tasks), len(records), did) as advance:
+        def on_done(rec: dict[str, Any]) -> None:
+            records[rec["id"]] = rec
+            advance(rec)
+
+        try:
+            _run_all(todo, workers, on_done)
+        except KeyboardInterrupt:
+            raise SymbenchError(f"interrupted with {len(records)} of {len(tasks)} trajectories "
+                                "done; run the same command again to resume") from None
+    seconds = time.perf_counter() - start
+
+    ordered = [records[i] for i in range(len(tasks))]
+    ok = [{k: r[k] for k in ("id", "file", "sha256", "n_steps", "scenario")}
+          for r in ordered if r["status"] == "ok"]
+    failures = [{k: r[k] for k in ("id", "scenario", "failure")}
+                for r in ordered if r["status"] != "ok"]
+    repair = f"symbench data generate --robot {robot} --preset {preset_name}"
+    meta = write_metadata(root, {
+        "id": did, "source": "generated", "robot": robot, "n_legs": spec.n_legs,
+        "robot_spec_hash": key["robot_spec_hash"], "raw_schema_version": SCHEMA_VERSION,
+        "record_period_s": RECORD_PERIOD, "versions": key["versions"], "preset": preset_name,
+        "scenario_grid": grid.grid(order) if id_override is None else {"scenarios": len(tasks)},
+        "trajectories": ok, "failures": failures,
+        "n_samples": sum(r["n_steps"] - 1 for r in ok), "repair_command": repair,
+    })
+    return GenerationReport(did, root, len(ok), len(failures), meta["n_samples"], len(todo),
+                            seconds, meta["content_hash"], failures)
+
+
+class _progress:
+    """A rich progress bar over trajectories (or nothing), counting failures as they come."""
+
+    def __init__(self, show: bool, total: int, done: int, label: str):
+        self.show, self.total, self.done, self.label = show, total, done, label
+        self.failed = 0
+
+    def __enter__(self) -> Callable[[dict], None]:
+        if not self.show:
+            return lambda rec: None
+        from rich.progress import (BarColumn, MofNCompleteColumn, Progress, TextColumn,
+                                   TimeElapsedColumn, TimeRemainingColumn)
+
+        self.bar = Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(),
+                            TimeElapsedColumn(), TimeRemainingColumn())
+        self.bar.start()
+        self.task = self.bar.add_task(self.label, total=self.total, completed=self.done)
+        return self.advance
+
+    def advance(self, rec: dict) -> None:
+        self.failed += rec["status"] != "ok"
+        suffix = f" ({self.failed} detached)" if self.failed else ""
+        self.bar.update(self.task, advance=1, description=self.label + suffix)
+
+    def __exit__(self, *exc: object) -> None:
+        if self.show:
+            self.bar.stop()

@@ -1,0 +1,85 @@
+"""A dataset's metadata.json: provenance, per-file SHA-256 and the content hash.
+
+The content hash is the SHA-256 of the canonical metadata without the hash itself; the
+metadata holds every file's SHA-256, so the hash covers the trajectories, the scenario grid,
+the failures and the library versions. No timestamps are stored, which keeps the file (and
+the hash) identical when the same preset is generated twice on the same versions.
+"""
+
+from __future__ import annotations
+
+from importlib.metadata import PackageNotFoundError, version
+from pathlib import Path
+from typing import Any
+
+from symbench.core.data.storage import atomic_write_json, canonical_json, read_json, sha256_bytes, sha256_file
+from symbench.core.errors import SymbenchError
+from symbench.core.paths import datasets_dir
+
+FORMAT = "symbench-dataset"
+FORMAT_VERSION = 1
+METADATA = "metadata.json"
+VERSIONED = ("symbench", "mujoco", "dm-control", "numpy", "pyarrow")
+
+
+def library_versions() -> dict[str, str]:
+    out = {}
+    for name in VERSIONED:
+        try:
+            out[name] = version(name)
+        except PackageNotFoundError:
+            out[name] = "not installed"
+    return out
+
+
+def dataset_dir(dataset_id: str) -> Path:
+    if not dataset_id or "/" in dataset_id or dataset_id.startswith("."):
+        raise SymbenchError(f"'{dataset_id}' is not a valid dataset id")
+    return datasets_dir() / dataset_id
+
+
+def content_hash(meta: dict[str, Any]) -> str:
+    body = {k: v for k, v in meta.items() if k != "content_hash"}
+    return sha256_bytes(canonical_json(body).encode())
+
+
+def write_metadata(root: Path, meta: dict[str, Any]) -> dict[str, Any]:
+    """Add format fields and the content hash; write metadata.json atomically (last)."""
+    meta = {"format": FORMAT, "format_version": FORMAT_VERSION, **meta}
+    meta["content_hash"] = content_hash(meta)
+    atomic_write_json(root / METADATA, meta)
+    return meta
+
+
+def read_metadata(dataset_id: str, missing_hint: str) -> tuple[Path, dict[str, Any]]:
+    root = dataset_dir(dataset_id)
+    if not (root / METADATA).is_file():
+        raise SymbenchError(f"dataset '{dataset_id}' is not in the cache ({root}); {missing_hint}")
+    meta = read_json(root / METADATA, f"dataset '{dataset_id}'")
+    if not isinstance(meta, dict) or meta.get("format") != FORMAT:
+        raise SymbenchError(f"{root / METADATA} is not a symbench dataset's metadata")
+    if meta.get("format_version") != FORMAT_VERSION:
+        raise SymbenchError(f"dataset '{dataset_id}' has format version {meta.get('format_version')},"
+                            f" this symbench reads {FORMAT_VERSION}; {meta.get('repair_command')}")
+    if meta.get("content_hash") != content_hash(meta):
+        raise SymbenchError(f"dataset '{dataset_id}': metadata.json was edited or damaged "
+                            f"(content hash mismatch); rebuild it with: {meta.get('repair_command')}")
+    return root, meta
+
+
+def damaged_files(root: Path, meta: dict[str, Any]) -> list[str]:
+    """Trajectory files that are missing or whose SHA-256 differs from the metadata."""
+    bad = []
+    for rec in meta["trajectories"]:
+        path = root / rec["file"]
+        if not path.is_file() or sha256_file(path) != rec["sha256"]:
+            bad.append(rec["file"])
+    return bad
+
+
+def verify(root: Path, meta: dict[str, Any]) -> None:
+    bad = damaged_files(root, meta)
+    if bad:
+        shown = ", ".join(bad[:3]) + (f" and {len(bad) - 3} more" if len(bad) > 3 else "")
+        raise SymbenchError(f"dataset '{meta['id']}': {shown} changed, truncated or missing "
+                            f"(SHA-256 mismatch); fix it with: {meta['repair_command']}")

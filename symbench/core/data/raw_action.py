@@ -1,0 +1,77 @@
+"""A robot's symmetry acting on raw states, so that `view(g . raw) == g . view(raw)` is testable.
+
+A rotation element relabels the legs (leg i becomes leg perm[i]) and turns the base about its
+own z by minus the element's angle, so every leg lands where its predecessor was: the world
+sees the same robot, described with shifted labels. A reflection relabels the legs, mirrors
+each leg (coxa angles flip) and mirrors the scene in the world x-z plane, which keeps gravity.
+The element's base-frame map comes from the leg frames, so a robot that is not symmetric
+under the element is refused instead of silently giving wrong numbers.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import numpy as np
+
+from symbench.core.data.frames import LegFrames, quat_multiply, yaw_matrix, yaw_quat
+from symbench.core.errors import SymbenchError
+from symbench.core.groups import GroupElement
+from symbench.core.schema import FeatureType
+
+MIRROR_Y = np.diag([1.0, -1.0, 1.0])  # mirror in the x-z plane (a leg's, or the world's)
+JOINT_COLUMNS = ("q", "qd", "qdd", "tau")
+FLAG_COLUMNS = ("contact", "magnet")
+WORLD_VECTORS = ("base_pos", "base_linvel", "base_linacc")
+
+
+def base_map(frames: LegFrames, g: GroupElement, tol: float = 1e-9) -> np.ndarray:
+    """G_b (3, 3) with G_b R_b_li = R_b_l(perm i) S and G_b o_i = o_(perm i), S the leg mirror."""
+    if g.n_legs != frames.n_legs:
+        raise SymbenchError(f"{g!r} acts on {g.n_legs} legs, the robot has {frames.n_legs}")
+    s = MIRROR_Y if g.reflect else np.eye(3)
+    perm = list(g.perm)
+    rot, org = frames.rotations, frames.origins
+    gb = rot[perm[0]] @ s @ rot[0].T
+    frames_ok = np.allclose(gb @ rot, rot[perm] @ s, atol=tol)
+    origins_ok = np.allclose(org @ gb.T, org[perm], atol=tol)
+    if not (frames_ok and origins_ok and np.allclose(gb[:, 2], [0, 0, 1], atol=tol)):
+        raise SymbenchError(f"the robot's leg frames are not symmetric under {g!r}: "
+                            "check the mounts and coxa yaws of its robot.toml")
+    return gb
+
+
+def act_on_raw(g: GroupElement, raw: Mapping[str, np.ndarray], frames: LegFrames
+               ) -> dict[str, np.ndarray]:
+    """g . raw for raw columns shaped (T, ...) (see symbench.core.raw), float64."""
+    gb = base_map(frames, g)
+    src = g.source_legs()
+    out = {k: np.array(v, copy=True) for k, v in raw.items()}
+    joint_signs = np.asarray(FeatureType.JOINT.reflection_signs) if g.reflect else np.ones(3)
+    for name in JOINT_COLUMNS:
+        out[name] = np.asarray(raw[name], np.float64)[:, src, :] * joint_signs
+    for name in FLAG_COLUMNS:
+        out[name] = np.asarray(raw[name])[:, src]
+    quat = np.asarray(raw["base_quat"], np.float64)
+    if not g.reflect:
+        angle = np.arctan2(gb[1, 0], gb[0, 0])
+        out["base_quat"] = quat_multiply(quat, yaw_quat(-angle))
+        return out
+    angle = np.arctan2(*(gb @ MIRROR_Y)[[1, 0], 0])
+    turned = quat_multiply(quat, yaw_quat(angle))
+    out["base_quat"] = turned * np.array([1.0, -1.0, 1.0, -1.0])  # conjugated by the mirror
+    for name in WORLD_VECTORS:
+        out[name] = np.asarray(raw[name], np.float64) @ MIRROR_Y
+    out["base_angvel"] = np.asarray(raw["base_angvel"], np.float64) @ -MIRROR_Y
+    return out
+
+
+def rotate_scene_about_gravity(raw: Mapping[str, np.ndarray], angle: float
+                               ) -> dict[str, np.ndarray]:
+    """The same motion with the whole scene turned by `angle` (rad) about world z."""
+    rz = yaw_matrix(angle)
+    out = {k: np.array(v, copy=True) for k, v in raw.items()}
+    for name in (*WORLD_VECTORS, "base_angvel"):
+        out[name] = np.asarray(raw[name], np.float64) @ rz.T
+    out["base_quat"] = quat_multiply(yaw_quat(angle), np.asarray(raw["base_quat"], np.float64))
+    return out

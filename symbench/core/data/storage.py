@@ -1,0 +1,99 @@
+"""Files of a dataset: atomic writes, SHA-256, Parquet trajectories, JSON metadata.
+
+Nothing that others may read is ever half-written: every file goes to a temporary name in
+its own folder and is renamed into place. Parquet is written without pandas metadata or
+timestamps, so the same arrays on the same library versions give byte-identical files.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import io
+import json
+import os
+import tempfile
+from collections.abc import Mapping
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from symbench.core.data.columns import flatten, unflatten
+from symbench.core.errors import SymbenchError
+
+
+def atomic_write_bytes(path: Path, data: bytes) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    try:
+        with os.fdopen(fd, "wb") as f:
+            f.write(data)
+            f.flush()
+            os.fsync(f.fileno())
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+
+
+def canonical_json(obj: Any) -> str:
+    return json.dumps(obj, sort_keys=True, indent=2, allow_nan=False) + "\n"
+
+
+def atomic_write_json(path: Path, obj: Any) -> None:
+    atomic_write_bytes(path, canonical_json(obj).encode())
+
+
+def read_json(path: Path, what: str) -> Any:
+    try:
+        return json.loads(path.read_text())
+    except FileNotFoundError:
+        raise SymbenchError(f"{what}: {path} does not exist") from None
+    except (json.JSONDecodeError, UnicodeDecodeError) as exc:
+        raise SymbenchError(f"{what}: {path} is not valid JSON ({exc})") from None
+
+
+def sha256_bytes(data: bytes) -> str:
+    return hashlib.sha256(data).hexdigest()
+
+
+def sha256_file(path: Path) -> str:
+    h = hashlib.sha256()
+    with open(path, "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            h.update(block)
+    return h.hexdigest()
+
+
+def trajectory_bytes(arrays: Mapping[str, np.ndarray], n_legs: int) -> bytes:
+    """One trajectory as Parquet bytes (scalar columns, zstd)."""
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    table = pa.table(flatten(arrays, n_legs))
+    buf = io.BytesIO()
+    pq.write_table(table, buf, compression="zstd")
+    return buf.getvalue()
+
+
+def write_trajectory(path: Path, arrays: Mapping[str, np.ndarray], n_legs: int) -> str:
+    """Write atomically; return the file's SHA-256."""
+    data = trajectory_bytes(arrays, n_legs)
+    atomic_write_bytes(path, data)
+    return sha256_bytes(data)
+
+
+def read_columns(path: Path) -> dict[str, np.ndarray]:
+    """All scalar columns of a Parquet file; a damaged file is a SymbenchError."""
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    try:
+        table = pq.read_table(path)
+    except (OSError, pa.ArrowException) as exc:
+        raise SymbenchError(f"{path}: not a readable Parquet file ({exc})") from None
+    return {name: table.column(name).to_numpy() for name in table.column_names}
+
+
+def read_trajectory(path: Path, n_legs: int) -> dict[str, np.ndarray]:
+    return unflatten(read_columns(path), n_legs, str(path))
