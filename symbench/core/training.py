@@ -1,0 +1,193 @@
+"""One training protocol for every model and backend (DESIGN.md, Training).
+
+Adam, batch 64, the model's learning rate, MSE on normalized targets; stop when
+`stop_ratio` x validation loss exceeds the training loss `stop_patience` epochs in a row,
+or at `max_epochs`; keep the parameters with the best validation loss. Everything random
+(initialization, batch order) derives from the seed, and the batch order of epoch k depends
+on (seed, k) only, so a training resumed from its last checkpoint continues exactly as if it
+had never stopped.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+
+from symbench.core.arrays import ViewArrays
+from symbench.core.backends import get_backend
+from symbench.core.checkpoints import read_tensors, write_tensors
+from symbench.core.entries import ModelEntry
+from symbench.core.errors import SymbenchError
+from symbench.core.model_dims import ModelDims, dims_of
+from symbench.core.normalization import Normalizer
+from symbench.core.trained_model import TrainedModel
+
+
+@dataclass(frozen=True)
+class TrainConfig:
+    seed: int = 0
+    batch_size: int = 64
+    max_epochs: int = 200
+    stop_ratio: float = 0.7
+    stop_patience: int = 5
+    learning_rate: float | None = None  # None: the model entry's learning rate
+    hyper: dict[str, Any] = field(default_factory=dict)  # network sizes, passed to build
+    compile: bool | None = None  # None: the backend's faster default (see `bench models`)
+    progress: bool = True
+
+    def __post_init__(self) -> None:
+        for name in ("batch_size", "max_epochs", "stop_patience"):
+            if getattr(self, name) < 1:
+                raise SymbenchError(f"TrainConfig.{name} must be at least 1, got {getattr(self, name)}")
+
+    def to_dict(self) -> dict[str, Any]:
+        return asdict(self)
+
+    @classmethod
+    def from_dict(cls, d: dict[str, Any]) -> TrainConfig:
+        return cls(**d)
+
+
+@dataclass
+class _Progress:
+    """What the resume checkpoint records besides the parameters and optimizer state."""
+
+    epoch: int = 0
+    train_loss: list[float] = field(default_factory=list)
+    val_loss: list[float] = field(default_factory=list)
+    best_epoch: int = -1
+    strikes: int = 0
+    stopped: str = ""
+
+    @property
+    def best_val(self) -> float:
+        return self.val_loss[self.best_epoch] if self.best_epoch >= 0 else math.inf
+
+
+RESUME = "resume.safetensors"  # last epoch: parameters, optimizer state, progress as metadata
+BEST_DIR = "best"  # the TrainedModel with the best validation loss so far
+
+
+def batch_order(n: int, batch_size: int, seed: int, epoch: int) -> np.ndarray:
+    """(n_batches, batch) indices of one epoch: a fresh permutation, the remainder dropped."""
+    batch = min(batch_size, n)
+    perm = np.random.default_rng([seed, epoch]).permutation(n)
+    n_batches = n // batch
+    return perm[: n_batches * batch].reshape(n_batches, batch)
+
+
+def train(entry: ModelEntry, train: ViewArrays, val: ViewArrays, config: TrainConfig,
+          checkpoint_dir: Path | None = None) -> TrainedModel:
+    """Train `entry` on `train`, select on `val`; resume from `checkpoint_dir` when it holds one."""
+    dims = _check_data(entry, train, val)
+    normalizer = Normalizer.fit(train)
+    backend = get_backend(entry.backend)
+    compiled = backend.default_compiled if config.compile is None else config.compile
+    lr = config.learning_rate or entry.learning_rate
+    identity = _identity(entry, dims, config, len(train), len(val))
+    params = backend.init_params(entry, dims, config.hyper, config.seed)
+    trainer = backend.make_trainer(entry, dims, config.hyper, params, lr, compiled)
+    trainer.set_data(normalizer.normalize_inputs(train.inputs), normalizer.normalize("target", train.target),
+                     normalizer.normalize_inputs(val.inputs), normalizer.normalize("target", val.target))
+    state, best = _Progress(), params
+    if checkpoint_dir is not None and (Path(checkpoint_dir) / RESUME).is_file():
+        state, best = _resume(Path(checkpoint_dir), identity, trainer, entry, config)
+
+    def result() -> TrainedModel:
+        history = {"train_loss": state.train_loss, "val_loss": state.val_loss}
+        return TrainedModel(entry, dims, dict(config.hyper), normalizer, best, history,
+                            state.best_epoch, config.to_dict(), state.stopped)
+
+    with _progress_bar(config, entry) as bar:
+        task = bar.add_task("train", total=config.max_epochs, completed=state.epoch,
+                            loss="", name=f"{entry.name}/{entry.backend}")
+        while not state.stopped:
+            train_loss = trainer.train_epoch(batch_order(len(train), config.batch_size,
+                                                         config.seed, state.epoch))
+            val_loss = trainer.val_loss()
+            if not (math.isfinite(train_loss) and math.isfinite(val_loss)):
+                raise SymbenchError(f"{entry.name}/{entry.backend}: loss became {train_loss} "
+                                    f"(train) / {val_loss} (val) in epoch {state.epoch}; "
+                                    "lower the learning rate")
+            state.train_loss.append(train_loss)
+            state.val_loss.append(val_loss)
+            if val_loss < state.best_val:
+                state.best_epoch, best = state.epoch, trainer.params()
+            state.strikes = state.strikes + 1 if config.stop_ratio * val_loss > train_loss else 0
+            state.epoch += 1
+            state.stopped = _stop_reason(state, config)
+            if checkpoint_dir is not None:
+                _save_resume(Path(checkpoint_dir), identity, state, trainer, result())
+            bar.update(task, completed=state.epoch,
+                       loss=f"train {train_loss:.4g}  val {val_loss:.4g}  best {state.best_val:.4g}")
+    return result()
+
+
+def _stop_reason(state: _Progress, config: TrainConfig) -> str:
+    if state.strikes >= config.stop_patience:
+        return (f"{config.stop_ratio} x validation loss exceeded the training loss "
+                f"{config.stop_patience} epochs in a row")
+    if state.epoch >= config.max_epochs:
+        return f"reached max_epochs={config.max_epochs}"
+    return ""
+
+
+def _check_data(entry: ModelEntry, train: ViewArrays, val: ViewArrays) -> ModelDims:
+    for name, data in (("training", train), ("validation", val)):
+        if (data.view, data.variant) != (entry.view, entry.variant):
+            raise SymbenchError(f"model {entry.name} consumes the {entry.view}/{entry.variant} view; "
+                                f"the {name} data is {data.view}/{data.variant}")
+        if len(data) == 0:
+            raise SymbenchError(f"the {name} data is empty")
+    dims = dims_of(train)
+    if dims_of(val) != dims:
+        raise SymbenchError("training and validation data come from robots with different legs")
+    if not np.isfinite(val.target).all() or not all(np.isfinite(v).all() for v in val.inputs.values()):
+        raise SymbenchError("validation data holds NaN or infinite values")
+    return dims
+
+
+def _identity(entry: ModelEntry, dims: ModelDims, config: TrainConfig, n_train: int,
+              n_val: int) -> dict[str, Any]:
+    """What a resume checkpoint must match: the same model, data sizes and protocol."""
+    cfg = {k: v for k, v in config.to_dict().items() if k not in ("max_epochs", "progress")}
+    return {"model": entry.name, "backend": entry.backend, "dims": dims.to_dict(),
+            "config": cfg, "n_train": n_train, "n_val": n_val}
+
+
+def _save_resume(folder: Path, identity: dict, state: _Progress, trainer: Any,
+                 model: TrainedModel) -> None:
+    if state.best_epoch == state.epoch - 1:
+        model.save(folder / BEST_DIR)
+    arrays = {f"params/{k}": v for k, v in trainer.params().items()}
+    arrays.update({f"optimizer/{k}": v for k, v in trainer.optimizer_state().items()})
+    write_tensors(folder / RESUME, arrays, {"identity": identity, "progress": asdict(state)})
+
+
+def _resume(folder: Path, identity: dict, trainer: Any, entry: ModelEntry, config: TrainConfig):
+    arrays, saved = read_tensors(folder / RESUME)
+    if not isinstance(saved, dict) or saved.get("identity") != identity:
+        raise SymbenchError(f"{folder} holds a training of another model, data or configuration; "
+                            "use a fresh checkpoint folder")
+    state = _Progress(**saved["progress"])
+    state.stopped = _stop_reason(state, config)  # a larger max_epochs continues a capped run
+    params = _strip(arrays, "params/")
+    trainer.load_params(params)
+    trainer.load_optimizer_state(_strip(arrays, "optimizer/"))
+    best = TrainedModel.load(folder / BEST_DIR, entry).params if state.best_epoch >= 0 else params
+    return state, best
+
+
+def _strip(arrays: dict[str, np.ndarray], prefix: str) -> dict[str, np.ndarray]:
+    return {k.removeprefix(prefix): v for k, v in arrays.items() if k.startswith(prefix)}
+
+
+def _progress_bar(config: TrainConfig, entry: ModelEntry) -> Progress:
+    return Progress(TextColumn("{task.fields[name]}"), BarColumn(), MofNCompleteColumn(),
+                    TextColumn("epochs"), TextColumn("{task.fields[loss]}"), TimeElapsedColumn(),
+                    disable=not config.progress, transient=False)

@@ -1,0 +1,9 @@
+"""Built-in JAX/Flax models (imports JAX only when a network is built)."""
+
+from symbench.core.hookspecs import hookimpl
+from symbench.plugins.zoo import model_entries
+
+
+@hookimpl
+def symbench_models() -> list:
+    return model_entries("jax", __name__)

@@ -1,0 +1,24 @@
+"""FFNN: an MLP on a flat input (the `vector` view, or the flattened `leg_grouped` view)."""
+
+from __future__ import annotations
+
+import flax.linen as nn
+import jax.numpy as jnp
+
+from symbench.core.model_dims import ModelDims
+from symbench.plugins.jax_models.layers import LatentMLP
+
+
+class FFNN(nn.Module):
+    n_legs: int
+    width: int
+    layers: int
+
+    @nn.compact
+    def __call__(self, x: jnp.ndarray) -> jnp.ndarray:
+        h = LatentMLP(self.width, self.layers, name="body")(x.reshape(x.shape[0], -1))
+        return nn.Dense(3 * self.n_legs, name="out")(h).reshape(-1, self.n_legs, 3)
+
+
+def build(dims: ModelDims, width: int = 256, layers: int = 3) -> FFNN:
+    return FFNN(dims.n_legs, width, layers)

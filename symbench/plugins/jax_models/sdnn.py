@@ -1,0 +1,33 @@
+"""SDNN: one MLP shared by all legs, with repeated steps that see the sum over legs.
+
+Sharing weights across legs and aggregating by a sum make the network equivariant to every
+permutation of legs, hence to the robot's rotation group.
+"""
+
+from __future__ import annotations
+
+import flax.linen as nn
+import jax.numpy as jnp
+
+from symbench.core.model_dims import ModelDims
+from symbench.plugins.jax_models.layers import LatentMLP
+
+
+class SDNN(nn.Module):
+    latent: int
+    mlp_layers: int
+    steps: int
+
+    @nn.compact
+    def __call__(self, x: jnp.ndarray) -> jnp.ndarray:
+        h = LatentMLP(self.latent, self.mlp_layers, name="enc")(x)
+        for k in range(self.steps):
+            total = jnp.broadcast_to(h.sum(axis=1, keepdims=True), h.shape)
+            h = h + LatentMLP(self.latent, self.mlp_layers, name=f"proc{k}")(
+                jnp.concatenate([h, total], axis=-1))
+        h = LatentMLP(self.latent, self.mlp_layers, name="dec")(h)
+        return nn.Dense(3, name="out")(h)
+
+
+def build(dims: ModelDims, latent: int = 128, mlp_layers: int = 2, steps: int = 2) -> SDNN:
+    return SDNN(latent, mlp_layers, steps)

@@ -1,0 +1,65 @@
+"""Layers shared by the PyTorch models; names match the flax twins in jax_models/layers.py."""
+
+from __future__ import annotations
+
+import numpy as np
+import torch
+from torch import nn
+
+from symbench.plugins.graphs import incidence
+
+
+class LatentMLP(nn.Module):
+    """[Linear, ReLU] x n_layers, then LayerNorm: the paper's 'MLP followed by layer norm'."""
+
+    def __init__(self, n_in: int, width: int, n_layers: int):
+        super().__init__()
+        self.n_layers = n_layers
+        for i in range(n_layers):
+            self.add_module(f"linear{i}", nn.Linear(n_in if i == 0 else width, width))
+        self.norm = nn.LayerNorm(width)
+
+    def forward(self, x: torch.Tensor) -> torch.Tensor:
+        for i in range(self.n_layers):
+            x = torch.relu(getattr(self, f"linear{i}")(x))
+        return self.norm(x)
+
+
+class GraphNetwork(nn.Module):
+    """Encode-process-decode graph network (Battaglia et al. 2018) with sum aggregation.
+
+    Each processing step updates edges from (edge, both end nodes, global), nodes from (node,
+    sum of incident edges, global) and the global from (global, sum of edges, sum of nodes),
+    residually. The decoder reads every edge: edges carry the outputs.
+    """
+
+    def __init__(self, dims_in: tuple[int, int, int], edge_index: np.ndarray, n_out: int,
+                 edge: int, node: int, glob: int, mlp_layers: int, steps: int):
+        super().__init__()
+        fn, fe, fg = dims_in
+        senders, receivers = edge_index[:, 0], edge_index[:, 1]
+        self.register_buffer("senders", torch.from_numpy(senders.copy()), persistent=False)
+        self.register_buffer("receivers", torch.from_numpy(receivers.copy()), persistent=False)
+        self.register_buffer("incidence", torch.from_numpy(incidence(edge_index)), persistent=False)
+        self.steps = steps
+        self.enc_edge = LatentMLP(fe, edge, mlp_layers)
+        self.enc_node = LatentMLP(fn, node, mlp_layers)
+        self.enc_global = LatentMLP(fg, glob, mlp_layers)
+        for k in range(steps):
+            self.add_module(f"edge{k}", LatentMLP(edge + 2 * node + glob, edge, mlp_layers))
+            self.add_module(f"node{k}", LatentMLP(node + edge + glob, node, mlp_layers))
+            self.add_module(f"global{k}", LatentMLP(glob + edge + node, glob, mlp_layers))
+        self.dec = LatentMLP(edge, edge, mlp_layers)
+        self.out = nn.Linear(edge, n_out)
+
+    def forward(self, nodes: torch.Tensor, edges: torch.Tensor, glob: torch.Tensor) -> torch.Tensor:
+        v, e, u = self.enc_node(nodes), self.enc_edge(edges), self.enc_global(glob)
+        sum_incident = self.incidence.to(e.dtype)
+        for k in range(self.steps):
+            n_e, n_v = e.shape[1], v.shape[1]
+            e = e + getattr(self, f"edge{k}")(torch.cat(
+                [e, v[:, self.senders], v[:, self.receivers], u[:, None].expand(-1, n_e, -1)], -1))
+            agg = torch.einsum("ve,ned->nvd", sum_incident, e)
+            v = v + getattr(self, f"node{k}")(torch.cat([v, agg, u[:, None].expand(-1, n_v, -1)], -1))
+            u = u + getattr(self, f"global{k}")(torch.cat([u, e.sum(1), v.sum(1)], -1))
+        return self.out(self.dec(e))

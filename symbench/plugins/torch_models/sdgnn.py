@@ -1,0 +1,33 @@
+"""SD-GNN: base and feet as nodes, legs as edges carrying the leg-grouped features.
+
+Every leg is the same kind of edge and aggregation is a sum, so permuting legs permutes the
+edge outputs: the network is equivariant to the robot's rotation group.
+"""
+
+from __future__ import annotations
+
+import torch
+from torch import nn
+
+from symbench.core.model_dims import ModelDims
+from symbench.plugins.graphs import star_graph
+from symbench.plugins.torch_models.layers import GraphNetwork
+
+
+class SDGNN(nn.Module):
+    def __init__(self, n_legs: int, n_features: int, **sizes: int):
+        super().__init__()
+        edges, types = star_graph(n_legs)
+        self.register_buffer("node_types", torch.from_numpy(types), persistent=False)
+        self.graph = GraphNetwork((2, n_features, 1), edges, 3, **sizes)
+
+    def forward(self, x: torch.Tensor) -> torch.Tensor:
+        n = x.shape[0]
+        nodes = self.node_types.to(x.dtype).expand(n, -1, -1)
+        return self.graph(nodes, x, x.new_ones(n, 1))
+
+
+def build(dims: ModelDims, edge: int = 64, node: int = 16, glob: int = 16, mlp_layers: int = 2,
+          steps: int = 2) -> SDGNN:
+    return SDGNN(dims.n_legs, dims.shape("x")[-1], edge=edge, node=node, glob=glob,
+                 mlp_layers=mlp_layers, steps=steps)

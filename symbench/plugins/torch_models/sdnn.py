@@ -1,0 +1,35 @@
+"""SDNN: one MLP shared by all legs, with repeated steps that see the sum over legs.
+
+Sharing weights across legs and aggregating by a sum make the network equivariant to every
+permutation of legs, hence to the robot's rotation group.
+"""
+
+from __future__ import annotations
+
+import torch
+from torch import nn
+
+from symbench.core.model_dims import ModelDims
+from symbench.plugins.torch_models.layers import LatentMLP
+
+
+class SDNN(nn.Module):
+    def __init__(self, n_features: int, latent: int, mlp_layers: int, steps: int):
+        super().__init__()
+        self.steps = steps
+        self.enc = LatentMLP(n_features, latent, mlp_layers)
+        for k in range(steps):
+            self.add_module(f"proc{k}", LatentMLP(2 * latent, latent, mlp_layers))
+        self.dec = LatentMLP(latent, latent, mlp_layers)
+        self.out = nn.Linear(latent, 3)
+
+    def forward(self, x: torch.Tensor) -> torch.Tensor:
+        h = self.enc(x)
+        for k in range(self.steps):
+            total = h.sum(dim=1, keepdim=True).expand_as(h)
+            h = h + getattr(self, f"proc{k}")(torch.cat([h, total], dim=-1))
+        return self.out(self.dec(h))
+
+
+def build(dims: ModelDims, latent: int = 128, mlp_layers: int = 2, steps: int = 2) -> SDNN:
+    return SDNN(dims.shape("x")[-1], latent, mlp_layers, steps)

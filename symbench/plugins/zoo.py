@@ -1,0 +1,43 @@
+"""The built-in architectures, registered once per backend with the same names and defaults.
+
+Each backend package holds one module per architecture with a `build(dims, **hyper)`;
+`ffnn-leg` is the `ffnn` network fed the flattened leg-grouped view, which separates the
+effect of the representation from that of the architecture.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from symbench.core.entries import ModelEntry
+from symbench.core.lazy import Lazy
+
+
+@dataclass(frozen=True)
+class Architecture:
+    name: str
+    module: str  # file in the backend package holding `build`
+    view: str
+    equivariant: bool
+    learning_rate: float
+    description: str
+
+
+ARCHITECTURES = (
+    Architecture("ffnn", "ffnn", "vector", False, 1e-3,
+                 "MLP (3 x 256) on the stacked world-frame vector"),
+    Architecture("ffnn-leg", "ffnn", "leg_grouped", False, 1e-3,
+                 "the ffnn MLP on the flattened leg-grouped view"),
+    Architecture("gnn", "gnn", "body_graph", False, 1e-3,
+                 "typical graph network (bodies as nodes, joints as edges), 5 steps"),
+    Architecture("sdgnn", "sdgnn", "leg_grouped", True, 1e-3,
+                 "symmetric graph network: base and feet as nodes, legs as edges, 2 steps"),
+    Architecture("sdnn", "sdnn", "leg_grouped", True, 5e-4,
+                 "shared per-leg MLPs, sum over legs, 2 processing steps"),
+)
+
+
+def model_entries(backend: str, package: str, variant: str = "acc") -> list[ModelEntry]:
+    return [ModelEntry(a.name, backend, a.view, variant, a.equivariant,
+                       Lazy(f"{package}.{a.module}:build"), a.learning_rate, a.description)
+            for a in ARCHITECTURES]
