@@ -12,6 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from symbench.core.errors import SymbenchError
 from symbench.core.scenario import Scenario
 
 RECORD_PERIOD = 0.006
@@ -49,7 +50,9 @@ N_LEGS = {"magneto": 4, "hexa": 6, "nona": 9}
 
 
 def fake_simulate(scenario: Scenario, record_period: float = RECORD_PERIOD) -> FakeRollout:
-    """Deterministic per scenario; a scenario with seed 13 'detaches'."""
+    """Deterministic per scenario; seed 13 'detaches', seed 14 stops the 'controller'."""
+    if scenario.seed == 14:
+        raise SymbenchError("whole-body QP not solved (infeasible)")
     key = zlib.crc32(json.dumps(scenario.to_dict(), sort_keys=True).encode())
     n_steps = int(round(scenario.seconds / record_period))
     arrays = synthetic_raw(N_LEGS[scenario.robot], n_steps, seed=key)

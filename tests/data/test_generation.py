@@ -30,15 +30,17 @@ def test_generating_twice_gives_identical_files_and_hash(smoke_hexa, home, tmp_p
 
 
 def test_detached_trajectories_are_recorded_and_left_out(home):
-    grid = [Scenario("magneto", seed=s, seconds=0.1) for s in (0, 13, 1, 2)]
+    grid = [Scenario("magneto", seed=s, seconds=0.1) for s in (0, 13, 1, 14, 2)]
     report = generate("magneto", "smoke", simulator=fake_simulate, show_progress=False,
                       scenarios=grid, id_override="magneto-fails")
-    assert (report.n_trajectories, report.n_failed) == (3, 1)
+    assert (report.n_trajectories, report.n_failed) == (3, 2)
     ds = load_dataset("magneto-fails")
-    assert ds.trajectory_ids.tolist() == [0, 2, 3]
-    assert ds.metadata["failures"][0]["id"] == 1
-    assert "left the surface" in ds.metadata["failures"][0]["failure"]
-    assert set(ds.view("vector", "acc").trajectory.tolist()) == {0, 2, 3}
+    assert ds.trajectory_ids.tolist() == [0, 2, 4]
+    failures = ds.metadata["failures"]
+    assert [f["id"] for f in failures] == [1, 3]
+    assert "left the surface" in failures[0]["failure"]
+    assert "QP not solved" in failures[1]["failure"]
+    assert set(ds.view("vector", "acc").trajectory.tolist()) == {0, 2, 4}
 
 
 def test_an_interrupted_generation_resumes_and_keeps_finished_work(home, tmp_path, monkeypatch):

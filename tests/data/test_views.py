@@ -11,7 +11,7 @@ from symbench.core.data.frames import LegFrames
 from symbench.core.data.raw_action import act_on_raw, base_map, rotate_scene_about_gravity
 from symbench.core.data.views import build_view, sample_rows
 from symbench.core.errors import SymbenchError
-from symbench.core.groups import GroupElement
+from symbench.core.groups import GroupElement, act
 from symbench.core.robots import load_robot
 
 ROBOTS = ("magneto", "hexa", "nona")
@@ -62,14 +62,9 @@ def test_reflections_act_on_raw_like_on_views(robot):
         tried += 1
         base = build_view(raw, traj, frames, "leg_grouped", "next")
         moved = build_view(act_on_raw(g, raw, frames), traj, frames, "leg_grouped", "next")
-        np.testing.assert_allclose(moved.inputs["x"], g_act(g, base.inputs["x"], layout),
+        np.testing.assert_allclose(moved.inputs["x"], act(g, base.inputs["x"], layout.reflection_signs),
                                    atol=1e-10, rtol=0)
     assert tried > 0, f"no mirror fits {robot}'s leg frames"
-
-
-def g_act(g, x, layout):
-    from symbench.core.groups import act
-    return act(g, x, layout.reflection_signs)
 
 
 def test_a_wrong_element_for_the_geometry_is_refused():

@@ -62,6 +62,13 @@ def unflatten(columns: Mapping[str, np.ndarray], n_legs: int, source: str) -> di
     return out
 
 
+def check_flags(arrays: Mapping[str, np.ndarray], source: str) -> None:
+    """Contact and magnet must be 0 or 1: they are stored as bytes, nothing may be rounded."""
+    for flag in FLAGS:
+        if not np.isin(np.asarray(arrays[flag]), (0, 1)).all():
+            raise SymbenchError(f"{source}: column '{flag}' must hold only 0 and 1")
+
+
 def legs_in(names: list[str] | tuple[str, ...]) -> int:
     """Number of legs that scalar column names describe (from q.legN.coxa)."""
     found = [int(m.group(1)) for n in names if (m := _LEG_JOINT.match(n))]

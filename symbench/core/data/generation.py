@@ -4,8 +4,9 @@ Each trajectory is simulated in a worker process and written (Parquet, then a sm
 JSON) the moment it finishes, both atomically; metadata.json is written last. An
 interrupted run therefore resumes: a trajectory whose record matches the scenario, the
 robot spec and the library versions, and whose file matches its SHA-256, is kept; the rest
-is simulated again. A trajectory in which the robot detaches is recorded as failed and left
-out of the dataset. Simulation is deterministic, so the files and the content hash are too.
+is simulated again. A trajectory in which the robot detaches, or the simulator stops with a
+SymbenchError (e.g. an infeasible controller QP), is recorded as failed and left out.
+Simulation is deterministic, so the files and the content hash are too.
 """
 
 from __future__ import annotations
@@ -18,6 +19,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from symbench.core.data.columns import check_flags
 from symbench.core.data.metadata import dataset_dir, library_versions, write_metadata
 from symbench.core.data.presets import RECORD_PERIOD, dataset_id, preset, rotation_order
 from symbench.core.data.storage import atomic_write_json, read_json, sha256_file, write_trajectory
@@ -70,13 +72,19 @@ def trajectory_file(index: int) -> str:
 
 def run_task(task: Task) -> dict[str, Any]:
     """Simulate one scenario, write its file and record; return the record."""
-    rollout = task.simulator(Scenario.from_dict(task.scenario), record_period=task.key["record_period_s"])
     record: dict[str, Any] = {"id": task.index, "scenario": task.scenario, "key": task.key}
-    if not rollout.attached:
+    try:
+        rollout = task.simulator(Scenario.from_dict(task.scenario),
+                                 record_period=task.key["record_period_s"])
+    except SymbenchError as exc:  # e.g. the controller found no feasible torques
+        rollout = None
+        record.update(status="failed", failure=f"simulation stopped: {exc}")
+    if rollout is not None and not rollout.attached:
         record.update(status="failed", failure=rollout.failure or "the robot detached")
-    else:
+    elif rollout is not None:
         source = f"trajectory {task.index} ({task.scenario})"
         n_steps = validate_raw(rollout.arrays, task.n_legs, source)
+        check_flags(rollout.arrays, source)
         if n_steps < 2:
             raise SymbenchError(f"{source}: {n_steps} recorded step(s), at least 2 are needed")
         sha = write_trajectory(task.root / trajectory_file(task.index), rollout.arrays, task.n_legs)
@@ -146,7 +154,7 @@ def generate(robot: str, preset_name: str = "small", workers: int = 1,
     todo = [t for t in tasks if t.index not in records]
 
     start = time.perf_counter()
-    with _progress(show_progress, len(tasks), len(records), did) as advance:
+    with ProgressBar(show_progress, len(tasks), len(records), did) as advance:
         def on_done(rec: dict[str, Any]) -> None:
             records[rec["id"]] = rec
             advance(rec)
@@ -176,7 +184,7 @@ def generate(robot: str, preset_name: str = "small", workers: int = 1,
                             seconds, meta["content_hash"], failures)
 
 
-class _progress:
+class ProgressBar:
     """A rich progress bar over trajectories (or nothing), counting failures as they come."""
 
     def __init__(self, show: bool, total: int, done: int, label: str):

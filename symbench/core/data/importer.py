@@ -21,7 +21,7 @@ from typing import Any
 
 import numpy as np
 
-from symbench.core.data.columns import FLAGS, legs_in, unflatten
+from symbench.core.data.columns import check_flags, legs_in, unflatten
 from symbench.core.data.dataset import Dataset, load_dataset
 from symbench.core.data.metadata import dataset_dir, library_versions, write_metadata
 from symbench.core.data.storage import (atomic_write_bytes, atomic_write_json, read_columns,
@@ -67,9 +67,7 @@ def check_trajectory(arrays: dict[str, np.ndarray], n_legs: int, period: float, 
     n = validate_raw(arrays, n_legs, source)
     if n < 2:
         raise SymbenchError(f"{source}: {n} step(s); a trajectory needs at least 2")
-    for flag in FLAGS:
-        if not np.isin(arrays[flag], (0, 1)).all():
-            raise SymbenchError(f"{source}: column '{flag}' must hold only 0 and 1")
+    check_flags(arrays, source)
     dt = np.diff(np.asarray(arrays["t"], np.float64))
     if np.abs(dt - period).max() > PERIOD_TOLERANCE * period:
         raise SymbenchError(f"{source}: time steps range {dt.min():.6g}..{dt.max():.6g} s, but "

@@ -1,0 +1,107 @@
+"""Import of external logs: a round trip gives identical views; bad files get clear errors."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pyarrow as pa
+import pyarrow.parquet as pq
+import pytest
+from click.testing import CliRunner
+from synthetic_raw import synthetic_raw
+
+from symbench.core import schema
+from symbench.core.cli import build_cli
+from symbench.core.data import load_dataset
+from symbench.core.data.columns import flatten
+from symbench.core.data.importer import export_dataset, import_logs
+from symbench.core.errors import SymbenchError
+
+
+@pytest.mark.parametrize("fmt", ["parquet", "npz"])
+def test_export_then_import_gives_identical_views_and_splits(smoke_hexa, tmp_path, fmt):
+    original = load_dataset(smoke_hexa.dataset_id)
+    folder = export_dataset(original, tmp_path / "logs", fmt)
+    imported = import_logs(folder, "hexa-logs")
+    assert imported.metadata["source"] == "imported"
+    for view in schema.VIEWS:
+        for variant in schema.VARIANTS:
+            a, b = original.view(view, variant), imported.view(view, variant)
+            for key in a.inputs:
+                np.testing.assert_array_equal(a.inputs[key], b.inputs[key])
+            np.testing.assert_array_equal(a.target, b.target)
+    for split in ("iid", "unseen-heading", "unseen-rotation"):
+        assert original.split_indices(split, 2).to_dict() == imported.split_indices(split, 2).to_dict()
+    with pytest.raises(SymbenchError, match="already exists"):
+        import_logs(folder, "hexa-logs")
+    import_logs(folder, "hexa-logs", force=True)
+
+
+def _write_log(folder, n_legs=6, robot="hexa", n_steps=20, fmt="parquet", edit=None, period=0.006):
+    folder.mkdir(parents=True, exist_ok=True)
+    raw = synthetic_raw(n_legs, n_steps, seed=4)
+    if fmt == "parquet":
+        columns = flatten(raw, n_legs)
+        if edit:
+            edit(columns)
+        pq.write_table(pa.table(columns), folder / "run.parquet")
+    else:
+        if edit:
+            edit(raw)
+        np.savez(folder / "run.npz", **raw)
+    (folder / "import.json").write_text(json.dumps({"robot": robot, "record_period_s": period}))
+    return folder
+
+
+def test_a_minimal_log_folder_imports_without_a_scenario(home, tmp_path):
+    ds = import_logs(_write_log(tmp_path / "ok"), "my-logs")
+    assert len(ds.view("leg_grouped", "next")) == 19
+    assert ds.scenarios[0]["heading_deg"] is None
+    with pytest.raises(SymbenchError, match="heading_deg"):
+        ds.split_indices("unseen-heading", 0)
+
+
+BAD = {
+    "missing column": (dict(edit=lambda c: c.pop("q.leg3.femur")), "missing column.*q.leg3.femur"),
+    "nan": (dict(edit=lambda c: c["base_linacc.y"].__setitem__(5, np.nan)), "base_linacc.*NaN.*step 5"),
+    "unknown robot": (dict(robot="hexapod"), "unknown robot 'hexapod'.*hexa"),
+    "leg count": (dict(n_legs=4), "4 legs, robot 'hexa' has 6"),
+    "rate": (dict(period=0.001), "record_period_s = 0.001"),
+    "flag": (dict(edit=lambda c: c["contact.leg0"].__setitem__(3, 2)), "contact.*only 0 and 1"),
+    "npz length": (dict(fmt="npz", edit=lambda r: r.update(qd=r["qd"][:-1])), "'qd' has 19 steps, 't' has 20"),
+    "npz legs": (dict(fmt="npz", n_legs=9), "'q' has 9 legs, robot 'hexa' has 6"),
+    "npz nan": (dict(fmt="npz", edit=lambda r: r["q"].__setitem__((2, 1, 0), np.inf)), "'q' has NaN or inf"),
+    "too short": (dict(n_steps=1), "at least 2"),
+}
+
+
+@pytest.mark.parametrize("case", BAD)
+def test_bad_logs_are_refused_with_a_clear_message(home, tmp_path, case):
+    kwargs, message = BAD[case]
+    folder = _write_log(tmp_path / "bad", **kwargs)
+    with pytest.raises(SymbenchError, match=message):
+        import_logs(folder, "bad-logs")
+    assert not (home / "datasets" / "bad-logs").exists()  # nothing half-imported
+
+
+def test_cli_import_info_and_export(smoke_hexa, tmp_path):
+    runner = CliRunner()
+    cli = build_cli()
+    out = runner.invoke(cli, ["data", "info", smoke_hexa.dataset_id, "--json"])
+    assert out.exit_code == 0, out.output
+    info = json.loads(out.output)
+    assert info["trajectories"] == 4 and info["failed"] == 0
+    assert info["content_hash"] == smoke_hexa.content_hash
+    for name, counts in info["splits"].items():
+        assert counts["disjoint"], name
+        total = sum(counts[p]["trajectories"] for p in ("train", "val", "test"))
+        assert total <= 4
+    out = runner.invoke(cli, ["data", "export", smoke_hexa.dataset_id, str(tmp_path / "x")])
+    assert out.exit_code == 0, out.output
+    out = runner.invoke(cli, ["data", "import", str(tmp_path / "x"), "--id", "again"])
+    assert out.exit_code == 0 and "imported 4 trajectories" in out.output
+    out = runner.invoke(cli, ["data", "info", "hexa-climb-paper-v1"])
+    assert out.exit_code != 0 and "symbench data generate --robot hexa --preset paper" in out.output
+    out = runner.invoke(cli, ["data", "info", smoke_hexa.dataset_id])
+    assert out.exit_code == 0 and "unseen-rotation" in out.output

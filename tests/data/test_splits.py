@@ -1,0 +1,118 @@
+"""Standard splits: by trajectory, validation from the training side, deterministic."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from conftest import short_grid
+from synthetic_raw import fake_simulate
+
+from symbench import hookimpl
+from symbench.core import registry
+from symbench.core.data import load_dataset
+from symbench.core.data.generation import generate
+from symbench.core.entries import SplitEntry
+from symbench.core.errors import SymbenchError
+from symbench.core.plugins import PluginHost, set_host
+
+STANDARD = ("iid", "unseen-heading", "unseen-rotation",
+            "fraction-0.1", "fraction-0.25", "fraction-0.5", "fraction-0.75")
+
+
+@pytest.fixture
+def hexa_small(home):
+    generate("hexa", "small", simulator=fake_simulate, show_progress=False,
+             scenarios=short_grid("hexa"), id_override="hexa-short")
+    return load_dataset("hexa-short")
+
+
+def _scenario(ds, ids, field):
+    by_id = dict(zip(ds.trajectory_ids.tolist(), ds.scenarios))
+    return {by_id[i][field] for i in ids.tolist()}
+
+
+def test_the_standard_splits_are_registered():
+    assert set(STANDARD) <= set(registry.collect("splits"))
+
+
+@pytest.mark.parametrize("name", STANDARD)
+def test_parts_are_disjoint_deterministic_and_select_whole_trajectories(hexa_small, name):
+    parts = hexa_small.split_indices(name, seed=3)
+    ids = np.concatenate([parts.train, parts.val, parts.test])
+    assert len(np.unique(ids)) == len(ids)
+    assert min(len(parts.train), len(parts.val), len(parts.test)) >= 1
+    again = hexa_small.split_indices(name, seed=3)
+    assert again.to_dict() == parts.to_dict()
+    train, val, test = hexa_small.split_views("leg_grouped", "acc", name, seed=3)
+    assert set(np.unique(train.trajectory)) == set(parts.train.tolist())
+    assert set(np.unique(test.trajectory)) == set(parts.test.tolist())
+    per_traj = dict(zip(hexa_small.trajectory_ids.tolist(), hexa_small.n_samples.tolist()))
+    assert len(val) == sum(per_traj[i] for i in parts.val.tolist())  # whole trajectories
+
+
+def test_seeds_change_iid_but_nothing_else_changes_it(hexa_small):
+    a, b = hexa_small.split_indices("iid", 0), hexa_small.split_indices("iid", 1)
+    assert a.test.tolist() != b.test.tolist()
+    assert len(a.test) == len(b.test) == round(0.2 * 48)
+
+
+def test_unseen_heading_holds_out_whole_headings(hexa_small):
+    parts = hexa_small.split_indices("unseen-heading", 0)
+    train = _scenario(hexa_small, parts.train, "heading_deg")
+    assert train == {0.0, 90.0}
+    assert _scenario(hexa_small, parts.val, "heading_deg") <= train
+    assert _scenario(hexa_small, parts.test, "heading_deg") == {180.0, 270.0}
+
+
+def test_unseen_rotation_trains_in_one_fundamental_sector(hexa_small):
+    parts = hexa_small.split_indices("unseen-rotation", 0)
+    assert _scenario(hexa_small, parts.train, "yaw_deg") == {0.0}  # hexa: sector [0, 60)
+    assert _scenario(hexa_small, parts.val, "yaw_deg") == {0.0}
+    assert _scenario(hexa_small, parts.test, "yaw_deg") == {60.0, 120.0, 180.0, 240.0, 300.0}
+
+
+def test_fractions_are_nested_and_share_the_iid_test_set(hexa_small):
+    iid = hexa_small.split_indices("iid", 5)
+    previous: set[int] = set()
+    for share in (0.1, 0.25, 0.5, 0.75):
+        part = hexa_small.split_indices(f"fraction-{share:g}", 5)
+        assert part.test.tolist() == iid.test.tolist()
+        assert part.val.tolist() == iid.val.tolist()
+        train = set(part.train.tolist())
+        assert previous <= train <= set(iid.train.tolist())
+        assert len(train) == int(np.ceil(share * len(iid.train)))
+        previous = train
+
+
+def test_smoke_supports_every_standard_split(smoke_hexa):
+    ds = load_dataset(smoke_hexa.dataset_id)
+    for name in STANDARD:
+        ds.split_indices(name, 0)
+
+
+def test_a_split_plugin_is_used_and_its_mistakes_are_named(hexa_small):
+    class Plugin:
+        @hookimpl
+        def symbench_splits(self):
+            return [
+                SplitEntry("first-half", lambda ctx: np.where(
+                    ctx.trajectory_ids < 20, "train", np.where(ctx.trajectory_ids < 30, "val", "test"))),
+                SplitEntry("bad-label", lambda ctx: ["training"] * len(ctx.trajectory_ids)),
+                SplitEntry("no-test", lambda ctx: ["train"] * len(ctx.trajectory_ids)),
+            ]
+
+    host = PluginHost()
+    host.load_entry_points("none")  # the built-ins (robots, splits) ...
+    host.register(Plugin(), "mine")  # ... and one in-process plugin
+    set_host(host)
+    try:
+        parts = hexa_small.split_indices("first-half", 0)
+        assert parts.train.tolist() == list(range(20)) and len(parts.test) == 18
+        with pytest.raises(SymbenchError, match="unknown label"):
+            hexa_small.split_indices("bad-label", 0)
+        with pytest.raises(SymbenchError, match="test empty"):
+            hexa_small.split_indices("no-test", 0)
+        with pytest.raises(SymbenchError, match="unseen-rotation"):
+            hexa_small.split_indices("unseen-rotatoin", 0)
+    finally:
+        set_host(None)
