@@ -1,0 +1,224 @@
+"""Whole-body controller: task-space inverse dynamics as a QP, then joint feedback.
+
+Every control step:
+1. The QP (variables: accelerations of the base and the actuated joints, and the force the
+   surface plus the magnet exert on each foot) tracks the base pose and the swing ankle
+   with task accelerations, subject to the floating-base rows of M qdd + h = S'tau + J'f,
+   zero acceleration of the stance ankles, friction pyramids widened by the magnet pull
+   (|f_t| <= mu (f_n + F_magnet)), zero force on a lifted foot, and torque limits. M comes
+   from mj_fullM, h from qfrc_bias, J from mj_jac at the ankle (the passive gimbal passes
+   the foot's force through it; gimbal accelerations are taken as zero).
+2. Joint references from closed-form leg IK of the base reference and the ankle targets
+   (stance: where the ankle is; swing: the spline).
+3. Applied torque = feed-forward + Kp (q_ref - q) + Kd (qd_ref - qd), clipped to the limit;
+   the feedback runs inside MuJoCo's actuator (symbench.core.sim.model) so that the
+   implicit integrator keeps it stable, the controller sends u = tau_ff + Kp q_ref + Kd qd_ref.
+The friction pyramid's tangent axes follow each leg's frame, so nothing depends on leg
+numbering beyond relabelling: the whole loop is equivariant under the robot's rotations.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from symbench.core.robots import RobotSpec
+from symbench.core.sim.gait import RELEASE, SWING, TOUCHDOWN, GaitPlan, GaitTargets
+from symbench.core.sim.kinematics import leg_ik, leg_jacobian
+from symbench.core.sim.layout import ModelLayout
+from symbench.core.sim.model import ankle_to_sole
+from symbench.core.sim.qp import INF, DenseQP, InfeasibleQP
+
+
+IK_DAMPING = 1e-3  # m, damping of the velocity-level leg IK
+PRESS = 0.005  # m: a foot still in the air at touchdown is driven this far into the surface
+
+
+@dataclass(frozen=True)
+class ControllerGains:
+    """Controller settings that the robot spec does not fix (chosen here, see README)."""
+
+    base_kp: float = 400.0  # 1/s^2, base position and orientation
+    base_kd: float = 40.0
+    swing_kp: float = 900.0
+    swing_kd: float = 60.0
+    stance_kd: float = 20.0  # damping of residual stance-ankle velocity
+    w_task: float = 100.0
+    w_qdd: float = 1e-2  # regularisation: makes the QP strictly convex
+    w_force: float = 1e-3
+    w_release: float = 1.0  # force weight on a foot whose magnet is being released
+    friction_margin: float = 0.8  # fraction of mu used in the pyramid
+    magnet_margin: float = 0.7  # fraction of the pull the QP may rely on
+    torque_margin: float = 0.8  # fraction of the limit left to the feed-forward
+
+
+@dataclass
+class ControlOutput:
+    command: np.ndarray  # (n, 3) servo input u = tau_ff + Kp q_ref + Kd qd_ref
+    tau: np.ndarray  # (n, 3) torque the servo applies at this state: clip(u - Kp q - Kd qd)
+    tau_ff: np.ndarray  # (n, 3) QP feed-forward
+    magnet: np.ndarray  # (n,)
+    targets: GaitTargets
+    q_ref: np.ndarray  # (n, 3)
+
+
+def _vee_error(r_ref: np.ndarray, r: np.ndarray) -> np.ndarray:
+    """Small-angle orientation error (world frame) taking R to R_ref."""
+    e = r_ref @ r.T
+    return 0.5 * np.array([e[2, 1] - e[1, 2], e[0, 2] - e[2, 0], e[1, 0] - e[0, 1]])
+
+
+class WholeBodyController:
+    def __init__(self, spec: RobotSpec, model, layout: ModelLayout, plan: GaitPlan,
+                 base_rotation: np.ndarray, gains: ControllerGains | None = None):
+        self.spec, self.model, self.layout, self.plan = spec, model, layout, plan
+        self.gains = gains or ControllerGains()
+        self.r_ref = base_rotation
+        n = spec.n_legs
+        self.n, self.nr = n, 6 + 3 * n
+        self.nx = 9 + 3 * n  # base acceleration (6), swing-leg joint acceleration (3), forces
+        self.normal = plan.normal
+        # per-leg pyramid axes: the leg's x (at the reference pose) in the surface plane
+        leg_axes = np.einsum("ij,njk->nik", base_rotation, spec.leg_rotations())
+        t1 = leg_axes[:, :, 0] - np.outer(leg_axes[:, :, 0] @ self.normal, self.normal)
+        t1 /= np.linalg.norm(t1, axis=1, keepdims=True)
+        t2 = np.cross(self.normal, t1)
+        mu = spec.magnet.friction * self.gains.friction_margin
+        # rows per leg: +-t1 - mu n, +-t2 - mu n (<= mu F), then n (>= -F)
+        self.cone = np.stack([t1 - mu * self.normal, -t1 - mu * self.normal,
+                              t2 - mu * self.normal, -t2 - mu * self.normal,
+                              np.broadcast_to(self.normal, t1.shape)], axis=1)  # (n, 5, 3)
+        self.mu = mu
+        self.rot_bl = spec.leg_rotations()
+        self.org_bl = spec.leg_origins()
+        self.kp, self.kd = spec.control.kp, spec.control.kd
+        self.limit = spec.torque_limits()
+        self.foot = ankle_to_sole(spec)
+        self.qp = DenseQP(self.nx, 6, 8 * n)
+        self._m_full = np.zeros((model.nv, model.nv))
+        self._red = np.ix_(layout.reduced, layout.reduced)
+        self._C = np.zeros((8 * n, self.nx))
+        rows = 5 * np.arange(n)[:, None, None] + np.arange(5)[None, :, None]
+        cols = 9 + 3 * np.arange(n)[:, None, None] + np.arange(3)[None, None, :]
+        self._C[rows, cols] = self.cone
+        self._legs = np.arange(n)
+
+    def _ankle_jacobians(self, data, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """World-frame ankle Jacobians w.r.t. the free joint (n, 3, 6; MuJoCo's velocity
+        coordinates: world linear, local angular) and w.r.t. each leg's joints (n, 3, 3)."""
+        r_base = data.xmat[self.layout.base_body].reshape(3, 3)
+        arm = data.xpos[self.layout.ankle_body] - data.qpos[:3]  # (n, 3)
+        jb = np.zeros((self.n, 3, 6))
+        jb[:, :, :3] = np.eye(3)
+        skew = np.zeros((self.n, 3, 3))
+        skew[:, 0, 1], skew[:, 0, 2], skew[:, 1, 2] = -arm[:, 2], arm[:, 1], -arm[:, 0]
+        skew -= skew.transpose(0, 2, 1)
+        jb[:, :, 3:] = -skew @ r_base
+        jl = (r_base @ self.rot_bl) @ leg_jacobian(self.spec, q)
+        return jb, jl
+
+    def __call__(self, data, t: float, contact: np.ndarray) -> ControlOutput:
+        import mujoco
+
+        g, n, nr, lay = self.gains, self.n, self.nr, self.layout
+        tg = self.plan.targets(t)
+        mujoco.mj_fullM(self.model, data, self._m_full)
+        m_r = self._m_full[self._red]
+        h_r = data.qfrc_bias[lay.reduced]
+        qvel = data.qvel
+        q = data.qpos[lay.qpos]
+        qd = qvel[lay.dof]
+        jb, jl = self._ankle_jacobians(data, q)
+        ankle = data.xpos[lay.ankle_body]
+        ankle_vel = jb @ qvel[:6] + (jl @ qd[..., None])[..., 0]
+        r_base = data.xmat[lay.base_body].reshape(3, 3)
+        # the stepping leg is tracked while swinging and, pressing on, until it touches down
+        swing = tg.step_leg if (tg.step_leg >= 0 and (tg.phase[tg.step_leg] == SWING or (
+            tg.phase[tg.step_leg] == TOUCHDOWN and not contact[tg.step_leg]))) else -1
+
+        # contact set: feet that are down (lifted only while swinging; touchdown once felt)
+        down = (tg.phase != SWING) & ((tg.phase != TOUCHDOWN) | contact)
+        pull = self.spec.magnet.force * g.magnet_margin * tg.magnet * down
+
+        # qdd_r = T x + c: stance legs follow the base so that their ankles do not accelerate
+        # (beyond damping their residual velocity); the swing leg's joints are variables.
+        jl_inv = np.linalg.inv(jl)
+        T = np.zeros((nr, self.nx))
+        c = np.zeros(nr)
+        T[:6, :6] = np.eye(6)
+        leg_rows = 6 + 3 * self._legs
+        stance_acc = -g.stance_kd * ankle_vel
+        follow = -jl_inv @ jb  # (n, 3, 6)
+        bias = (jl_inv @ stance_acc[..., None])[..., 0]
+        for i in range(n):  # block placement only; the maths above is batched over legs
+            if i == swing:
+                T[leg_rows[i]: leg_rows[i] + 3, 6:9] = np.eye(3)
+            elif down[i]:
+                T[leg_rows[i]: leg_rows[i] + 3, :6] = follow[i]
+                c[leg_rows[i]: leg_rows[i] + 3] = bias[i]
+        # a lifted foot that is not the swing leg (touchdown before contact) keeps qdd = 0
+
+        # --- objective ---------------------------------------------------------------------
+        a_lin = tg.base_acc + g.base_kp * (tg.base_pos - data.qpos[:3]) + g.base_kd * (tg.base_vel - qvel[:3])
+        omega = r_base @ qvel[3:6]
+        a_ang = g.base_kp * _vee_error(self.r_ref, r_base) - g.base_kd * omega
+        H = np.zeros((self.nx, self.nx))
+        grad = np.zeros(self.nx)
+        H[:9, :9] = g.w_qdd * np.eye(9)
+        H[:6, :6] += g.w_task * np.eye(6)  # r_base is orthogonal: |R a| = |a|
+        grad[:3] -= g.w_task * a_lin
+        grad[3:6] -= g.w_task * (r_base.T @ a_ang)
+        if swing >= 0:
+            ankle_ref = tg.sole_pos + (self.foot - (tg.phase[swing] == TOUCHDOWN) * PRESS) * self.normal
+            a_sw = (tg.sole_acc + g.swing_kp * (ankle_ref - ankle[swing])
+                    + g.swing_kd * (tg.sole_vel - ankle_vel[swing]))
+            js = np.hstack([jb[swing], jl[swing]])  # (3, 9) on [base acc, swing joint acc]
+            H[:9, :9] += g.w_task * (js.T @ js)
+            grad[:9] -= g.w_task * (js.T @ a_sw)
+        force_w = np.where(tg.phase == RELEASE, g.w_release, g.w_force)
+        H[9:, 9:] += np.diag(np.repeat(force_w, 3))
+
+        # --- dynamics: M_r (T x + c) + h_r = S'tau + sum J_i' f_i -------------------------
+        mt = m_r @ T
+        mc_h = m_r @ c + h_r
+        A = mt[:6].copy()
+        A[:, 9:] -= jb.transpose(2, 0, 1).reshape(6, 3 * n)  # base rows see every foot force
+        b = -mc_h[:6]
+        C = self._C
+        lo, hi = np.full(8 * n, -INF), np.full(8 * n, INF)
+        cone_rows = 5 * self._legs[:, None] + np.arange(5)[None, :]
+        hi[cone_rows[:, :4]] = (self.mu * pull)[:, None]
+        lo[cone_rows[:, 4]] = -pull
+        hi[cone_rows[:, 4]] = np.where(down, INF, 0.0)
+        t0 = 5 * n
+        C[t0:, :] = mt[6:]
+        for i in range(n):  # tau_i = ... - J_leg_i' f_i
+            C[t0 + 3 * i: t0 + 3 * i + 3, 9 + 3 * i: 12 + 3 * i] = -jl[i].T
+        tau_max = np.tile(self.limit * g.torque_margin, n)
+        lo[t0:], hi[t0:] = -tau_max - mc_h[6:], tau_max - mc_h[6:]
+
+        try:
+            x = self.qp.solve(H, grad, A, b, C, lo, hi)
+        except InfeasibleQP:  # torque limits cannot be met: solve without, clip afterwards
+            lo[t0:], hi[t0:] = -INF, INF
+            x = self.qp.solve(H, grad, A, b, C, lo, hi)
+        tau_ff = (C[t0:] @ x + mc_h[6:]).reshape(n, 3)
+
+        # --- joint references and feedback -------------------------------------------------
+        target = ankle.copy()
+        target_vel = np.zeros((n, 3))
+        if swing >= 0:
+            target[swing] = tg.sole_pos + (self.foot - (tg.phase[swing] == TOUCHDOWN) * PRESS) * self.normal
+            target_vel[swing] = tg.sole_vel
+        rel = (target - tg.base_pos) @ self.r_ref  # base frame (reference pose)
+        rel_vel = (target_vel - tg.base_vel) @ self.r_ref
+        in_leg = np.einsum("nji,nj->ni", self.rot_bl, rel - self.org_bl)
+        vel_leg = np.einsum("nji,nj->ni", self.rot_bl, rel_vel)
+        q_ref = leg_ik(self.spec, in_leg)
+        jr = leg_jacobian(self.spec, q_ref)  # damped least squares: safe at a stretched leg
+        jtj = np.einsum("nki,nkj->nij", jr, jr) + IK_DAMPING**2 * np.eye(3)
+        qd_ref = np.linalg.solve(jtj, np.einsum("nki,nk->ni", jr, vel_leg)[..., None])[..., 0]
+        command = tau_ff + self.kp * q_ref + self.kd * qd_ref
+        tau = np.clip(command - self.kp * q - self.kd * qd, -self.limit, self.limit)
+        return ControlOutput(command, tau, tau_ff, tg.magnet, tg, q_ref)

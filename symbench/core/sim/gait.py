@@ -1,0 +1,143 @@
+"""The climbing gait: one leg at a time, Hermite-spline swings, magnet off only while lifted.
+
+Time is cut into slots of `release + swing + touchdown`; slot s moves leg order[s mod n].
+In its slot a leg releases its magnet (foot still down), swings along two cubic Hermite
+segments (start -> raised mid point -> goal, zero velocity at both ends) and touches down
+with the magnet on. Every step is `step_length` along the commanded direction; the base
+follows by step_length / n per slot (minimum-jerk), so feet stay within +-step/2 of their
+nominal place. Feet start staggered by their position in the order, so the first step is a
+full step too. All positions are world-frame; the base orientation reference is its start.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from symbench.core.errors import SymbenchError
+from symbench.core.robots import RobotSpec
+
+STANCE, RELEASE, SWING, TOUCHDOWN = 0, 1, 2, 3
+SETTLE = 0.2  # s of standing still before the first step
+# A touching-down magnet engages over this time instead of in one step: 147 N switched on
+# at once yanks a 0.3 kg foot into the stiff contact. At the start all magnets are on.
+MAGNET_RAMP = 0.05  # s
+
+
+def default_order(n_legs: int) -> tuple[int, ...]:
+    """Counter-clockwise, one leg after the other: equivariant under every rotation."""
+    return tuple(range(n_legs))
+
+
+def check_order(order: tuple[int, ...], n_legs: int) -> tuple[int, ...]:
+    if sorted(order) != list(range(n_legs)):
+        raise SymbenchError(f"leg order {order} is not a permutation of the {n_legs} legs")
+    return tuple(order)
+
+
+def min_jerk(u: np.ndarray | float) -> tuple:
+    """Position, velocity and acceleration (per unit duration) of 10u^3 - 15u^4 + 6u^5."""
+    u = np.clip(u, 0.0, 1.0)
+    return (u**3 * (10 - 15 * u + 6 * u**2), 30 * u**2 * (1 - u) ** 2,
+            60 * u * (1 - u) * (1 - 2 * u))
+
+
+def hermite(p0, v0, p1, v1, u: float, duration: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Cubic Hermite segment at u in [0, 1]: position, velocity, acceleration."""
+    u2, u3 = u * u, u * u * u
+    h = (2 * u3 - 3 * u2 + 1, u3 - 2 * u2 + u, -2 * u3 + 3 * u2, u3 - u2)
+    dh = (6 * u2 - 6 * u, 3 * u2 - 4 * u + 1, -6 * u2 + 6 * u, 3 * u2 - 2 * u)
+    ddh = (12 * u - 6, 6 * u - 4, -12 * u + 6, 6 * u - 2)
+    T = duration
+    pos = h[0] * p0 + h[1] * T * v0 + h[2] * p1 + h[3] * T * v1
+    vel = (dh[0] * p0 + dh[1] * T * v0 + dh[2] * p1 + dh[3] * T * v1) / T
+    acc = (ddh[0] * p0 + ddh[1] * T * v0 + ddh[2] * p1 + ddh[3] * T * v1) / T**2
+    return pos, vel, acc
+
+
+@dataclass(frozen=True)
+class GaitTargets:
+    phase: np.ndarray  # (n,) STANCE, RELEASE, SWING or TOUCHDOWN
+    magnet: np.ndarray  # (n,) 0..1 (ramps up when engaging)
+    base_pos: np.ndarray  # (3,) world
+    base_vel: np.ndarray
+    base_acc: np.ndarray
+    step_leg: int  # the leg in its step slot (release, swing, touchdown); -1 while settling
+    sole_pos: np.ndarray  # (3,) its sole target (world): start, spline, goal; zeros if none
+    sole_vel: np.ndarray
+    sole_acc: np.ndarray
+
+
+@dataclass(frozen=True)
+class GaitPlan:
+    spec: RobotSpec
+    order: tuple[int, ...]
+    direction: np.ndarray  # (3,) unit step direction in the world (in the surface plane)
+    normal: np.ndarray  # (3,) surface normal
+    base_start: np.ndarray  # (3,)
+    soles_start: np.ndarray  # (n, 3) sole contact points at t = 0 (world)
+
+    @staticmethod
+    def stagger(spec: RobotSpec, order: tuple[int, ...]) -> np.ndarray:
+        """(n,) start offsets along the direction, in m: leg at order position k starts
+        at -L (n-1) / 2n + k L / n so that every step is a full L and feet stay centred."""
+        n, step = spec.n_legs, spec.gait.step_length
+        position = np.empty(n)
+        position[list(order)] = np.arange(n)
+        return -step * (n - 1) / (2 * n) + position * step / n
+
+    @property
+    def slot(self) -> float:
+        return self.spec.gait.step_duration
+
+    def _steps_done(self, t: float) -> tuple[np.ndarray, int, float]:
+        """Steps completed before the current slot, per leg;, the current slot index and the time into it."""
+        n = self.spec.n_legs
+        s = int(np.floor((t - SETTLE) / self.slot)) if t >= SETTLE else -1
+        tau = t - SETTLE - s * self.slot if s >= 0 else 0.0
+        position = np.empty(n, dtype=np.int64)
+        position[list(self.order)] = np.arange(n)
+        if s < 0:
+            return np.zeros(n, dtype=np.int64), s, tau
+        started = (s - position + n) // n
+        return started - (position == s % n), s, tau
+
+    def targets(self, t: float) -> GaitTargets:
+        g, n = self.spec.gait, self.spec.n_legs
+        done, s, tau = self._steps_done(t)
+        phase = np.full(n, STANCE)
+        magnet = np.ones(n)
+        # base: s full slots plus the minimum-jerk share of the current one
+        shift = g.step_length / n
+        u, du, ddu = min_jerk(tau / self.slot) if s >= 0 else (0.0, 0.0, 0.0)
+        travel = (max(s, 0) + u) * shift
+        base_pos = self.base_start + travel * self.direction
+        base_vel = (du * shift / self.slot) * self.direction
+        base_acc = (ddu * shift / self.slot**2) * self.direction
+        zeros = np.zeros(3)
+        leg, pos, vel, acc = -1, zeros, zeros, zeros
+        if s >= 0:
+            leg = self.order[s % n]
+            start = self.soles_start[leg] + done[leg] * g.step_length * self.direction
+            goal = start + g.step_length * self.direction
+            if tau < g.release:
+                phase[leg], magnet[leg], pos = RELEASE, 0.0, start
+            elif tau < g.release + g.swing:
+                phase[leg], magnet[leg] = SWING, 0.0
+                pos, vel, acc = self._swing(start, goal, (tau - g.release) / g.swing)
+            else:
+                phase[leg], pos = TOUCHDOWN, goal
+                magnet[leg] = min_jerk((tau - g.release - g.swing) / MAGNET_RAMP)[0]
+        return GaitTargets(phase, magnet, base_pos, base_vel, base_acc, leg, pos, vel, acc)
+
+    def _swing(self, start: np.ndarray, goal: np.ndarray, u: float):
+        """Two Hermite segments through the raised mid point, at swing fraction u."""
+        g = self.spec.gait
+        half = g.swing / 2
+        mid = 0.5 * (start + goal) + g.swing_height * self.normal
+        mid_vel = (goal - start) / g.swing * 1.5  # matches a cubic's peak speed
+        zero = np.zeros(3)
+        if u < 0.5:
+            return hermite(start, zero, mid, mid_vel, u / 0.5, half)
+        return hermite(mid, mid_vel, goal, zero, (u - 0.5) / 0.5, half)

@@ -1,0 +1,55 @@
+"""Closed-form leg kinematics in the leg frame, vectorised over legs.
+
+The ankle (the end of the tibia, centre of the passive gimbal) is the point the joints
+control; with the gimbal free, the foot's contact force passes through it. Leg frame: x
+along the coxa's zero direction, z up; femur and tibia pitch about -y (positive lifts).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from symbench.core.robots import RobotSpec
+
+
+def leg_fk(spec: RobotSpec, q: np.ndarray) -> np.ndarray:
+    """Ankle positions (..., 3) in the leg frames for joint angles q (..., 3)."""
+    lc, lf, lt = (spec.leg.lengths[k] for k in ("coxa", "femur", "tibia"))
+    q0, q1, q2 = q[..., 0], q[..., 1], q[..., 2]
+    reach = lc + lf * np.cos(q1) + lt * np.cos(q1 + q2)
+    height = lf * np.sin(q1) + lt * np.sin(q1 + q2)
+    return np.stack([reach * np.cos(q0), reach * np.sin(q0), height], axis=-1)
+
+
+def leg_jacobian(spec: RobotSpec, q: np.ndarray) -> np.ndarray:
+    """d ankle / d q, shaped (..., 3, 3), in the leg frame."""
+    lc, lf, lt = (spec.leg.lengths[k] for k in ("coxa", "femur", "tibia"))
+    q0, q1, q2 = q[..., 0], q[..., 1], q[..., 2]
+    reach = lc + lf * np.cos(q1) + lt * np.cos(q1 + q2)
+    d_reach1 = -lf * np.sin(q1) - lt * np.sin(q1 + q2)
+    d_reach2 = -lt * np.sin(q1 + q2)
+    d_h1 = lf * np.cos(q1) + lt * np.cos(q1 + q2)
+    d_h2 = lt * np.cos(q1 + q2)
+    c0, s0 = np.cos(q0), np.sin(q0)
+    jac = np.zeros(q.shape[:-1] + (3, 3))
+    jac[..., 0, 0], jac[..., 1, 0] = -reach * s0, reach * c0
+    jac[..., 0, 1], jac[..., 1, 1], jac[..., 2, 1] = d_reach1 * c0, d_reach1 * s0, d_h1
+    jac[..., 0, 2], jac[..., 1, 2], jac[..., 2, 2] = d_reach2 * c0, d_reach2 * s0, d_h2
+    return jac
+
+
+def leg_ik(spec: RobotSpec, ankle: np.ndarray) -> np.ndarray:
+    """Joint angles (..., 3) putting the ankle at `ankle` (..., 3), knee-up branch.
+
+    A target out of reach is clipped to the nearest reachable knee angle (straight or
+    folded leg), so the controller never stops mid-step; the tracking error shows it.
+    """
+    lc, lf, lt = (spec.leg.lengths[k] for k in ("coxa", "femur", "tibia"))
+    q0 = np.arctan2(ankle[..., 1], ankle[..., 0])
+    reach = np.hypot(ankle[..., 0], ankle[..., 1]) - lc
+    height = ankle[..., 2]
+    d2 = reach**2 + height**2
+    cos_knee = (d2 - lf**2 - lt**2) / (2 * lf * lt)
+    q2 = -np.arccos(np.clip(cos_knee, -1.0, 1.0))  # negative: the tibia bends down
+    q1 = np.arctan2(height, reach) - np.arctan2(lt * np.sin(q2), lf + lt * np.cos(q2))
+    return np.stack([q0, q1, q2], axis=-1)

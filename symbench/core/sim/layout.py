@@ -1,0 +1,68 @@
+"""Where each leg's joints, foot and actuators live in a compiled model, as index arrays.
+
+Everything the controller and the recorder read per leg goes through these arrays, so that
+per-leg work is vectorised and no code depends on the order legs appear in the model.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from symbench.core.robots import JOINT_NAMES, RobotSpec
+from symbench.core.sim.model import BASE, SURFACE, joint_name, magnet_name, sole_name
+
+
+@dataclass(frozen=True)
+class ModelLayout:
+    n_legs: int
+    qpos: np.ndarray  # (n, 3) qpos addresses of coxa, femur, tibia
+    dof: np.ndarray  # (n, 3) dof addresses
+    motor: np.ndarray  # (n, 3) actuator ids of the joint motors
+    magnet: np.ndarray  # (n,) actuator ids of the adhesion actuators
+    ankle_pitch: np.ndarray  # (n,) qpos addresses of the first (pitch) gimbal joint
+    ankle_body: np.ndarray  # (n,) body ids of the first gimbal link (origin = ankle)
+    sole_geom: np.ndarray  # (n,) geom ids of the soles
+    surface_geom: int
+    base_body: int
+    reduced: np.ndarray  # (6 + 3n,) dofs the controller models: base, then actuated joints
+
+    @classmethod
+    def of(cls, model, spec: RobotSpec) -> ModelLayout:
+        import mujoco
+
+        def jid(i: int, j: str) -> int:
+            return mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_JOINT, joint_name(i, j))
+
+        def aid(name: str) -> int:
+            return mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_ACTUATOR, name)
+
+        n = spec.n_legs
+        joints = np.array([[jid(i, j) for j in JOINT_NAMES] for i in range(n)])
+        dof = model.jnt_dofadr[joints]
+        base = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, BASE)
+        base_dof = model.jnt_dofadr[model.body_jntadr[base]]
+        return cls(
+            n_legs=n,
+            qpos=model.jnt_qposadr[joints],
+            dof=dof,
+            motor=np.array([[aid(joint_name(i, j)) for j in JOINT_NAMES] for i in range(n)]),
+            magnet=np.array([aid(magnet_name(i)) for i in range(n)]),
+            ankle_pitch=model.jnt_qposadr[[jid(i, "ankle0") for i in range(n)]],
+            ankle_body=np.array([mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, f"leg{i}_ankle0")
+                                 for i in range(n)]),
+            sole_geom=np.array([mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, sole_name(i))
+                                for i in range(n)]),
+            surface_geom=mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, SURFACE),
+            base_body=base,
+            reduced=np.concatenate([base_dof + np.arange(6), dof.reshape(-1)]),
+        )
+
+    def contact_flags(self, model, data, within: float) -> np.ndarray:
+        """(n,) True where MuJoCo's signed distance between that leg's sole and the
+        climbing surface is below `within` (the spec's contact distance, 5 mm)."""
+        import mujoco
+
+        return np.array([mujoco.mj_geomDistance(model, data, g, self.surface_geom, 2 * within, None)
+                         < within for g in self.sole_geom])

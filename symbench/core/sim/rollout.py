@@ -1,0 +1,171 @@
+"""Run the controller in the climbing environment and record raw trajectories.
+
+Per control step (1 kHz, the physics step): read the state x_t (dm-control keeps position-
+and velocity-dependent quantities of x_t up to date), compute the torques, record x_t, step,
+then record the acceleration MuJoCo used to integrate from x_t (data.qacc: joint qdd, and the
+base origin's world-frame acceleration, which excludes gravity by construction). Rows are
+kept every `record_period` seconds.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from symbench.core.errors import SymbenchError
+from symbench.core.raw import validate_raw
+from symbench.core.scenario import Scenario
+from symbench.core.sim.controller import ControlOutput, WholeBodyController
+from symbench.core.sim.gait import STANCE, SWING
+from symbench.core.sim.setup import Climb
+
+BASE_TILT_LIMIT = np.radians(30.0)  # base normal vs surface normal: beyond this it fell
+
+
+@dataclass
+class Rollout:
+    arrays: dict[str, np.ndarray]  # exactly the columns of symbench/core/raw.py
+    attached: bool  # False when a stance foot left the surface or the base fell
+    failure: str | None  # what went wrong, when it did
+    metrics: dict[str, float] = field(default_factory=dict)  # tracking, torque, timing
+
+
+class _Recorder:
+    """Pre-allocated raw columns, filled row by row."""
+
+    def __init__(self, n_rows: int, n_legs: int):
+        shapes = {"t": (), "base_pos": (3,), "base_quat": (4,), "base_linvel": (3,),
+                  "base_angvel": (3,), "base_linacc": (3,), "q": (n_legs, 3), "qd": (n_legs, 3),
+                  "qdd": (n_legs, 3), "tau": (n_legs, 3), "contact": (n_legs,), "magnet": (n_legs,)}
+        self.cols = {k: np.zeros((n_rows, *s)) for k, s in shapes.items()}
+        self.rows = 0
+
+    def trimmed(self) -> dict[str, np.ndarray]:
+        return {k: v[: self.rows] for k, v in self.cols.items()}
+
+
+def _record_period_steps(record_period: float, timestep: float) -> int:
+    k = round(record_period / timestep)
+    if k < 1 or abs(k * timestep - record_period) > 1e-9:
+        raise SymbenchError(f"record_period {record_period} s is not a multiple of the "
+                            f"control period {timestep} s")
+    return k
+
+
+def run_climb(climb: Climb, seconds: float, record_period: float = 0.006,
+              on_step: Callable[[ControlOutput, object], None] | None = None) -> Rollout:
+    """Simulate `climb` for `seconds`; stops early (attached=False) when the robot falls."""
+    from symbench.core.sim.task import load_climb
+
+    env = load_climb(climb, time_limit=seconds + 1.0)
+    env.reset()
+    physics, task = env.physics, env.task
+    model, data, lay = physics.model.ptr, physics.data.ptr, physics.layout
+    spec = climb.spec
+    controller = WholeBodyController(spec, model, lay, task.plan, climb.base_rotation)
+    dt = model.opt.timestep
+    n_steps = int(round(seconds / dt))
+    every = _record_period_steps(record_period, dt)
+    rec = _Recorder(n_steps // every + 1, spec.n_legs)
+    cols = rec.cols
+    normal, height0 = task.plan.normal, float(task.plan.base_start @ task.plan.normal)
+    action = np.zeros(model.nu)
+    failure = None
+    stats = _Stats(spec.n_legs)
+    wall = time.perf_counter()
+    for step in range(n_steps):
+        t = data.time
+        contact = physics.contact_flags()
+        out = controller(data, t, contact)
+        action[lay.motor] = out.command
+        action[lay.magnet] = out.magnet
+        row = rec.rows if step % every == 0 else -1
+        if row >= 0:
+            r_base = data.xmat[lay.base_body].reshape(3, 3)
+            cols["t"][row] = t
+            cols["base_pos"][row] = data.qpos[:3]
+            cols["base_quat"][row] = data.qpos[3:7]
+            cols["base_linvel"][row] = data.qvel[:3]
+            cols["base_angvel"][row] = r_base @ data.qvel[3:6]
+            cols["q"][row] = data.qpos[lay.qpos]
+            cols["qd"][row] = data.qvel[lay.dof]
+            cols["contact"][row] = contact
+            cols["magnet"][row] = out.magnet > 0.0
+        stats.update(out, data, lay, task.plan)
+        env.step(action)
+        if on_step is not None:
+            on_step(out, physics)
+        if row >= 0:
+            cols["tau"][row] = data.actuator_force[lay.motor]  # what MuJoCo applied
+            cols["qdd"][row] = data.qacc[lay.dof]
+            cols["base_linacc"][row] = data.qacc[:3]
+            rec.rows += 1
+        failure = _detached(out, contact, data, lay, normal, height0)
+        if failure is not None:
+            failure = f"t={t:.3f} s: {failure}"
+            break
+    wall = time.perf_counter() - wall
+    arrays = rec.trimmed()
+    validate_raw(arrays, spec.n_legs, source=f"rollout of {spec.name}")
+    metrics = stats.summary(spec, data, task.plan)
+    metrics.update(sim_seconds=float(data.time), wall_seconds=wall,
+                   real_time_factor=float(data.time) / wall if wall > 0 else float("inf"))
+    return Rollout(arrays, failure is None, failure, metrics)
+
+
+def _detached(out: ControlOutput, contact: np.ndarray, data, lay, normal, height0) -> str | None:
+    lost = np.flatnonzero((out.targets.phase == STANCE) & ~contact)
+    if lost.size:
+        return f"stance foot of leg(s) {', '.join(map(str, lost))} left the surface"
+    r_base = data.xmat[lay.base_body].reshape(3, 3)
+    if np.arccos(np.clip(r_base[:, 2] @ normal, -1, 1)) > BASE_TILT_LIMIT:
+        return "base tilted more than 30 degrees from the surface normal"
+    height = data.qpos[:3] @ normal
+    if height < 0.3 * height0:
+        return f"base dropped to {height:.3f} m above the surface"
+    return None
+
+
+class _Stats:
+    """Running tracking errors and torque peaks, for `symbench sim check`."""
+
+    def __init__(self, n_legs: int):
+        self.base_err = []
+        self.swing_err = []
+        self.peak_tau = np.zeros(3)
+        self.start = None
+
+    def update(self, out: ControlOutput, data, lay, plan) -> None:
+        if self.start is None:
+            self.start = data.qpos[:3].copy()
+        tg = out.targets
+        self.base_err.append(float(np.linalg.norm(tg.base_pos - data.qpos[:3])))
+        if tg.step_leg >= 0 and tg.phase[tg.step_leg] == SWING:
+            ankle = data.xpos[lay.ankle_body[tg.step_leg]]
+            target = tg.sole_pos + plan.spec.leg.lengths["foot"] * plan.normal
+            self.swing_err.append(float(np.linalg.norm(target - ankle)))
+        self.peak_tau = np.maximum(self.peak_tau, np.abs(out.tau).max(axis=0))
+
+    def summary(self, spec, data, plan) -> dict[str, float]:
+        base = np.asarray(self.base_err)
+        swing = np.asarray(self.swing_err) if self.swing_err else np.zeros(1)
+        walked = float((data.qpos[:3] - self.start) @ plan.direction)
+        return {
+            "distance_walked": walked,
+            "base_error_rms": float(np.sqrt(np.mean(base**2))),
+            "base_error_max": float(base.max()),
+            "swing_error_rms": float(np.sqrt(np.mean(swing**2))),
+            "swing_error_max": float(swing.max()),
+            "peak_torque_coxa": float(self.peak_tau[0]),
+            "peak_torque_femur": float(self.peak_tau[1]),
+            "peak_torque_tibia": float(self.peak_tau[2]),
+            "torque_limit": float(spec.control.torque_limit),
+        }
+
+
+def simulate(scenario: Scenario, record_period: float = 0.006) -> Rollout:
+    """The contract entry point: one scenario, raw columns every `record_period` seconds."""
+    return run_climb(Climb.from_scenario(scenario), scenario.seconds, record_period)

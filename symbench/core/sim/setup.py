@@ -1,0 +1,87 @@
+"""One climb, fully specified in numbers: the robot on its arena, start pose and gait.
+
+`Climb.from_scenario` maps a `Scenario` (direction by name) onto it; the symmetry test uses
+`Climb` directly because a rotated-and-relabelled run steps in a rotated body direction.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from symbench.core.robots import RobotSpec, load_robot
+from symbench.core.scenario import Scenario
+from symbench.core.sim.arena import Arena, rot_z
+from symbench.core.sim.gait import GaitPlan, check_order, default_order
+from symbench.core.sim.kinematics import leg_fk, leg_ik
+from symbench.core.sim.model import ankle_to_sole, stance_height
+
+# Seeded start perturbation: a translation in the surface plane and a small base twist,
+# both world-frame, so that they commute with the robot's rotation symmetry.
+SEED_OFFSET = 0.01  # m
+SEED_LINVEL = 0.02  # m/s
+SEED_ANGVEL = 0.05  # rad/s
+
+
+@dataclass(frozen=True)
+class Climb:
+    spec: RobotSpec
+    arena: Arena
+    yaw_deg: float = 0.0
+    direction_deg: float = 0.0  # body frame, counter-clockwise from the base x axis
+    order: tuple[int, ...] | None = None
+    seed: int = 0
+
+    @classmethod
+    def from_scenario(cls, scenario: Scenario, spec: RobotSpec | None = None) -> Climb:
+        spec = spec or load_robot(scenario.robot)
+        return cls(spec, Arena(scenario.inclination_deg, scenario.heading_deg), scenario.yaw_deg,
+                   scenario.direction_deg, scenario.leg_order, scenario.seed)
+
+    @property
+    def leg_order(self) -> tuple[int, ...]:
+        n = self.spec.n_legs
+        return check_order(self.order, n) if self.order is not None else default_order(n)
+
+    @property
+    def base_rotation(self) -> np.ndarray:
+        """R_wb at the start, also the orientation the controller holds."""
+        return self.arena.rotation @ rot_z(np.radians(self.yaw_deg))
+
+    def _seeded(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        rng = np.random.default_rng(self.seed)
+        surface = self.arena.rotation
+        offset = surface[:, :2] @ rng.uniform(-SEED_OFFSET, SEED_OFFSET, 2)
+        linvel = surface[:, :2] @ rng.uniform(-SEED_LINVEL, SEED_LINVEL, 2)
+        angvel = self.arena.normal * rng.uniform(-SEED_ANGVEL, SEED_ANGVEL)
+        return offset, linvel, angvel
+
+    def plan(self) -> GaitPlan:
+        spec, r_wb = self.spec, self.base_rotation
+        beta = np.radians(self.direction_deg)
+        dir_body = np.array([np.cos(beta), np.sin(beta), 0.0])
+        offset, _, _ = self._seeded()
+        base = stance_height(spec) * self.arena.normal + offset
+        soles = self._nominal_soles_body() + np.outer(GaitPlan.stagger(spec, self.leg_order), dir_body)
+        return GaitPlan(spec, self.leg_order, r_wb @ dir_body, self.arena.normal, base,
+                        base + soles @ r_wb.T)
+
+    def _nominal_soles_body(self) -> np.ndarray:
+        spec = self.spec
+        ankle = leg_fk(spec, np.asarray(spec.leg.stance))
+        ankles = np.einsum("nij,j->ni", spec.leg_rotations(), ankle) + spec.leg_origins()
+        return ankles - np.array([0.0, 0.0, ankle_to_sole(spec)])
+
+    def initial_state(self, plan: GaitPlan) -> tuple[np.ndarray, ...]:
+        """Base position, R_wb, world linear and angular velocity, joint angles (n, 3) and
+        ankle pitch angles (n,) that put every sole on its start point, the foot axis along
+        the surface normal."""
+        spec, r_wb = self.spec, self.base_rotation
+        lift = np.array([0.0, 0.0, ankle_to_sole(spec)])
+        ankles_body = (plan.soles_start - plan.base_start) @ r_wb + lift
+        in_leg = np.einsum("nji,nj->ni", spec.leg_rotations(), ankles_body - spec.leg_origins())
+        q = leg_ik(spec, in_leg)
+        ankle_pitch = q[:, 1] + q[:, 2] + np.pi / 2  # turns the tibia axis onto -normal
+        _, linvel, angvel = self._seeded()
+        return plan.base_start, r_wb, linvel, angvel, q, ankle_pitch
