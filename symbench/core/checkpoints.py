@@ -3,8 +3,6 @@
 from __future__ import annotations
 
 import json
-import os
-import tempfile
 from pathlib import Path
 from typing import Any
 
@@ -12,30 +10,17 @@ import numpy as np
 from safetensors import SafetensorError, safe_open
 from safetensors.numpy import save
 
+from symbench.core.atomic import write_bytes_atomic
 from symbench.core.errors import SymbenchError
 
 METADATA_KEY = "symbench"
-
-
-def write_atomic(path: Path, data: bytes) -> None:
-    """Write to a temporary file in the same folder, then rename over `path`."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
-    try:
-        with os.fdopen(fd, "wb") as f:
-            f.write(data)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
 
 
 def write_tensors(path: Path, arrays: dict[str, np.ndarray], metadata: Any = None) -> None:
     """Arrays as safetensors; `metadata` (JSON-ready) rides in the same file, so both are
     replaced by one atomic rename."""
     meta = {METADATA_KEY: json.dumps(metadata)} if metadata is not None else None
-    write_atomic(path, save({k: np.ascontiguousarray(v) for k, v in arrays.items()}, meta))
+    write_bytes_atomic(Path(path), save({k: np.ascontiguousarray(v) for k, v in arrays.items()}, meta))
 
 
 def read_tensors(path: Path) -> tuple[dict[str, np.ndarray], Any]:
@@ -52,7 +37,7 @@ def read_tensors(path: Path) -> tuple[dict[str, np.ndarray], Any]:
 
 
 def write_json(path: Path, obj: Any) -> None:
-    write_atomic(path, (json.dumps(obj, indent=2, sort_keys=True) + "\n").encode())
+    write_bytes_atomic(Path(path), (json.dumps(obj, indent=2, sort_keys=True) + "\n").encode())
 
 
 def read_json(path: Path) -> Any:

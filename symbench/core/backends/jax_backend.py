@@ -43,7 +43,8 @@ def _dummy(dims: ModelDims, dtype: Any = jnp.float32) -> dict[str, jax.Array]:
 
 
 def flatten(tree: Any) -> Params:
-    return {k: np.asarray(v) for k, v in traverse_util.flatten_dict(tree, sep="/").items()}
+    """Copies: a zero-copy view of a device buffer would change when the next step donates it."""
+    return {k: np.array(v) for k, v in traverse_util.flatten_dict(tree, sep="/").items()}
 
 
 def unflatten(params: Params, dtype: Any = jnp.float32) -> dict:
@@ -128,7 +129,7 @@ class JaxTrainer:
 
     def optimizer_state(self) -> Params:
         leaves = jax.tree_util.tree_flatten_with_path(self.state[1])[0]
-        return {jax.tree_util.keystr(path): np.asarray(v) for path, v in leaves}
+        return {jax.tree_util.keystr(path): np.array(v) for path, v in leaves}
 
     def load_optimizer_state(self, state: Params) -> None:
         paths, treedef = jax.tree_util.tree_flatten_with_path(self.state[1])
