@@ -123,3 +123,15 @@ def test_metadata_names_its_provenance(smoke_hexa):
     assert set(meta["versions"]) >= {"symbench", "mujoco", "dm-control"}
     assert meta["scenario_grid"]["yaws_deg"] == [0.0, 180.0]
     assert len({r["sha256"] for r in meta["trajectories"]}) == 4
+
+
+def test_ensure_dataset_generates_only_when_missing(home, monkeypatch):
+    from symbench.core.data import generation
+
+    calls = []
+    monkeypatch.setattr(generation, "default_simulator",
+                        lambda: lambda s, record_period: calls.append(s) or fake_simulate(s, record_period))
+    ds = generation.ensure_dataset("hexa", "smoke", workers=1, show_progress=False)
+    assert len(calls) == 4 and ds.id == "hexa-climb-smoke-v1"
+    assert generation.ensure_dataset("hexa", "smoke", workers=1).content_hash == ds.content_hash
+    assert len(calls) == 4

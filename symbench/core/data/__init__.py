@@ -6,6 +6,7 @@
 """
 
 from symbench.core.data.dataset import Dataset, load_dataset
+from symbench.core.data.generation import ensure_dataset, generate
 from symbench.core.data.presets import PRESETS, dataset_id
 
-__all__ = ["PRESETS", "Dataset", "dataset_id", "load_dataset"]
+__all__ = ["PRESETS", "Dataset", "dataset_id", "ensure_dataset", "generate", "load_dataset"]

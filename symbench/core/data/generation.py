@@ -211,3 +211,15 @@ class ProgressBar:
     def __exit__(self, *exc: object) -> None:
         if self.show:
             self.bar.stop()
+
+
+def ensure_dataset(robot: str, preset_name: str = "small", workers: int = 2,
+                   show_progress: bool = True):
+    """The preset's dataset, generated first when it is not in the cache (`symbench run`)."""
+    from symbench.core.data.dataset import load_dataset
+    from symbench.core.data.metadata import METADATA
+
+    did = dataset_id(robot, preset_name)
+    if not (dataset_dir(did) / METADATA).is_file():
+        generate(robot, preset_name, workers, show_progress=show_progress)
+    return load_dataset(did)
