@@ -26,9 +26,11 @@ from symbench.core.registry import KINDS, collect
 LAZY_COMMANDS: dict[str, str] = {
     "run": "symbench.core.run_command:run",
     "bench": "symbench.core.bench_cli:bench",
+    "sim": "symbench.core.sim.cli:sim",
     "leaderboard": "symbench.core.leaderboard_cli:leaderboard",
     "sweep": "symbench.core.sweep_cli:sweep",
     "data": "symbench.core.data.cli:data",
+    "check-equivariance": "symbench.testing.check_command:check_equivariance",
 }
 
 stderr = Console(stderr=True)

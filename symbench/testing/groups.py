@@ -1,0 +1,13 @@
+"""The symmetry group of a registered robot, read from its spec."""
+
+from __future__ import annotations
+
+from symbench.core.groups import LegGroup
+
+BUILTIN_ROBOTS = ("magneto", "hexa", "nona")
+
+
+def robot_group(name: str) -> LegGroup:
+    from symbench.core.robots import load_robot
+
+    return load_robot(name).group
