@@ -7,7 +7,9 @@ import importlib
 import click
 
 # subcommand -> "module:attribute" of a click command
-BENCH_COMMANDS: dict[str, str] = {}
+BENCH_COMMANDS: dict[str, str] = {
+    "sim": "symbench.core.sim.bench:bench_sim",
+}
 
 
 class LazyBenchGroup(click.Group):

@@ -12,6 +12,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from symbench.core.errors import SymbenchError
+
 GRAVITY = np.array([0.0, 0.0, -9.81])
 
 
@@ -38,6 +40,10 @@ def mat_to_quat(rot: np.ndarray) -> np.ndarray:
 class Arena:
     inclination_deg: float = 0.0
     heading_deg: float = 0.0
+
+    def __post_init__(self) -> None:
+        if not 0.0 <= self.inclination_deg <= 180.0:
+            raise SymbenchError(f"arena: inclination_deg {self.inclination_deg} is outside 0..180")
 
     @property
     def rotation(self) -> np.ndarray:

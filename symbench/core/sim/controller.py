@@ -32,7 +32,7 @@ from symbench.core.sim.qp import INF, DenseQP, InfeasibleQP
 
 
 IK_DAMPING = 1e-3  # m, damping of the velocity-level leg IK
-PRESS = 0.005  # m: a foot still in the air at touchdown is driven this far into the surface
+PRESS = 0.01  # m: a foot still in the air at touchdown is driven this far into the surface
 
 
 @dataclass(frozen=True)
@@ -103,14 +103,21 @@ class WholeBodyController:
         cols = 9 + 3 * np.arange(n)[:, None, None] + np.arange(3)[None, None, :]
         self._C[rows, cols] = self.cone
         self._legs = np.arange(n)
+        self._eye3, self._eye6, self._eye9 = np.eye(3), np.eye(6), np.eye(9)
+        self._tau_max = np.tile(self.limit * self.gains.torque_margin, n)
+        self._jb = np.zeros((n, 3, 6))
+        self._jb[:, :, :3] = np.eye(3)
+        self._cone_rows = 5 * self._legs[:, None] + np.arange(5)[None, :]
+        self._h_base = np.zeros((self.nx, self.nx))  # the constant part of the Hessian
+        self._h_base[:9, :9] = self.gains.w_qdd * np.eye(9)
+        self._h_base[:6, :6] += self.gains.w_task * np.eye(6)  # |R a| = |a|: R is orthogonal
 
     def _ankle_jacobians(self, data, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """World-frame ankle Jacobians w.r.t. the free joint (n, 3, 6; MuJoCo's velocity
         coordinates: world linear, local angular) and w.r.t. each leg's joints (n, 3, 3)."""
         r_base = data.xmat[self.layout.base_body].reshape(3, 3)
         arm = data.xpos[self.layout.ankle_body] - data.qpos[:3]  # (n, 3)
-        jb = np.zeros((self.n, 3, 6))
-        jb[:, :, :3] = np.eye(3)
+        jb = self._jb.copy()
         skew = np.zeros((self.n, 3, 3))
         skew[:, 0, 1], skew[:, 0, 2], skew[:, 1, 2] = -arm[:, 2], arm[:, 1], -arm[:, 0]
         skew -= skew.transpose(0, 2, 1)
@@ -118,7 +125,8 @@ class WholeBodyController:
         jl = (r_base @ self.rot_bl) @ leg_jacobian(self.spec, q)
         return jb, jl
 
-    def __call__(self, data, t: float, contact: np.ndarray) -> ControlOutput:
+    def __call__(self, data, t: float, touching: np.ndarray) -> ControlOutput:
+        """Torques at time t; `touching` says which soles are close enough for the magnet."""
         import mujoco
 
         g, n, nr, lay = self.gains, self.n, self.nr, self.layout
@@ -135,10 +143,10 @@ class WholeBodyController:
         r_base = data.xmat[lay.base_body].reshape(3, 3)
         # the stepping leg is tracked while swinging and, pressing on, until it touches down
         swing = tg.step_leg if (tg.step_leg >= 0 and (tg.phase[tg.step_leg] == SWING or (
-            tg.phase[tg.step_leg] == TOUCHDOWN and not contact[tg.step_leg]))) else -1
+            tg.phase[tg.step_leg] == TOUCHDOWN and not touching[tg.step_leg]))) else -1
 
         # contact set: feet that are down (lifted only while swinging; touchdown once felt)
-        down = (tg.phase != SWING) & ((tg.phase != TOUCHDOWN) | contact)
+        down = (tg.phase != SWING) & ((tg.phase != TOUCHDOWN) | touching)
         pull = self.spec.magnet.force * g.magnet_margin * tg.magnet * down
 
         # qdd_r = T x + c: stance legs follow the base so that their ankles do not accelerate
@@ -146,14 +154,14 @@ class WholeBodyController:
         jl_inv = np.linalg.inv(jl)
         T = np.zeros((nr, self.nx))
         c = np.zeros(nr)
-        T[:6, :6] = np.eye(6)
+        T[:6, :6] = self._eye6
         leg_rows = 6 + 3 * self._legs
         stance_acc = -g.stance_kd * ankle_vel
         follow = -jl_inv @ jb  # (n, 3, 6)
         bias = (jl_inv @ stance_acc[..., None])[..., 0]
         for i in range(n):  # block placement only; the maths above is batched over legs
             if i == swing:
-                T[leg_rows[i]: leg_rows[i] + 3, 6:9] = np.eye(3)
+                T[leg_rows[i]: leg_rows[i] + 3, 6:9] = self._eye3
             elif down[i]:
                 T[leg_rows[i]: leg_rows[i] + 3, :6] = follow[i]
                 c[leg_rows[i]: leg_rows[i] + 3] = bias[i]
@@ -163,10 +171,8 @@ class WholeBodyController:
         a_lin = tg.base_acc + g.base_kp * (tg.base_pos - data.qpos[:3]) + g.base_kd * (tg.base_vel - qvel[:3])
         omega = r_base @ qvel[3:6]
         a_ang = g.base_kp * _vee_error(self.r_ref, r_base) - g.base_kd * omega
-        H = np.zeros((self.nx, self.nx))
+        H = self._h_base.copy()
         grad = np.zeros(self.nx)
-        H[:9, :9] = g.w_qdd * np.eye(9)
-        H[:6, :6] += g.w_task * np.eye(6)  # r_base is orthogonal: |R a| = |a|
         grad[:3] -= g.w_task * a_lin
         grad[3:6] -= g.w_task * (r_base.T @ a_ang)
         if swing >= 0:
@@ -187,7 +193,7 @@ class WholeBodyController:
         b = -mc_h[:6]
         C = self._C
         lo, hi = np.full(8 * n, -INF), np.full(8 * n, INF)
-        cone_rows = 5 * self._legs[:, None] + np.arange(5)[None, :]
+        cone_rows = self._cone_rows
         hi[cone_rows[:, :4]] = (self.mu * pull)[:, None]
         lo[cone_rows[:, 4]] = -pull
         hi[cone_rows[:, 4]] = np.where(down, INF, 0.0)
@@ -195,8 +201,7 @@ class WholeBodyController:
         C[t0:, :] = mt[6:]
         for i in range(n):  # tau_i = ... - J_leg_i' f_i
             C[t0 + 3 * i: t0 + 3 * i + 3, 9 + 3 * i: 12 + 3 * i] = -jl[i].T
-        tau_max = np.tile(self.limit * g.torque_margin, n)
-        lo[t0:], hi[t0:] = -tau_max - mc_h[6:], tau_max - mc_h[6:]
+        lo[t0:], hi[t0:] = -self._tau_max - mc_h[6:], self._tau_max - mc_h[6:]
 
         try:
             x = self.qp.solve(H, grad, A, b, C, lo, hi)
@@ -217,7 +222,7 @@ class WholeBodyController:
         vel_leg = np.einsum("nji,nj->ni", self.rot_bl, rel_vel)
         q_ref = leg_ik(self.spec, in_leg)
         jr = leg_jacobian(self.spec, q_ref)  # damped least squares: safe at a stretched leg
-        jtj = np.einsum("nki,nkj->nij", jr, jr) + IK_DAMPING**2 * np.eye(3)
+        jtj = np.einsum("nki,nkj->nij", jr, jr) + IK_DAMPING**2 * self._eye3
         qd_ref = np.linalg.solve(jtj, np.einsum("nki,nk->ni", jr, vel_leg)[..., None])[..., 0]
         command = tau_ff + self.kp * q_ref + self.kd * qd_ref
         tau = np.clip(command - self.kp * q - self.kd * qd, -self.limit, self.limit)

@@ -11,6 +11,7 @@ full step too. All positions are world-frame; the base orientation reference is 
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -19,6 +20,8 @@ from symbench.core.errors import SymbenchError
 from symbench.core.robots import RobotSpec
 
 STANCE, RELEASE, SWING, TOUCHDOWN = 0, 1, 2, 3
+ZERO3 = np.zeros(3)
+ZERO3.flags.writeable = False
 SETTLE = 0.2  # s of standing still before the first step
 # A touching-down magnet engages over this time instead of in one step: 147 N switched on
 # at once yanks a 0.3 kg foot into the stiff contact. At the start all magnets are on.
@@ -36,9 +39,9 @@ def check_order(order: tuple[int, ...], n_legs: int) -> tuple[int, ...]:
     return tuple(order)
 
 
-def min_jerk(u: np.ndarray | float) -> tuple:
+def min_jerk(u: float) -> tuple[float, float, float]:
     """Position, velocity and acceleration (per unit duration) of 10u^3 - 15u^4 + 6u^5."""
-    u = np.clip(u, 0.0, 1.0)
+    u = min(max(u, 0.0), 1.0)
     return (u**3 * (10 - 15 * u + 6 * u**2), 30 * u**2 * (1 - u) ** 2,
             60 * u * (1 - u) * (1 - 2 * u))
 
@@ -91,35 +94,22 @@ class GaitPlan:
     def slot(self) -> float:
         return self.spec.gait.step_duration
 
-    def _steps_done(self, t: float) -> tuple[np.ndarray, int, float]:
-        """Steps completed before the current slot, per leg;, the current slot index and the time into it."""
-        n = self.spec.n_legs
-        s = int(np.floor((t - SETTLE) / self.slot)) if t >= SETTLE else -1
-        tau = t - SETTLE - s * self.slot if s >= 0 else 0.0
-        position = np.empty(n, dtype=np.int64)
-        position[list(self.order)] = np.arange(n)
-        if s < 0:
-            return np.zeros(n, dtype=np.int64), s, tau
-        started = (s - position + n) // n
-        return started - (position == s % n), s, tau
-
     def targets(self, t: float) -> GaitTargets:
         g, n = self.spec.gait, self.spec.n_legs
-        done, s, tau = self._steps_done(t)
+        s = math.floor((t - SETTLE) / self.slot) if t >= SETTLE else -1  # slot index
+        tau = t - SETTLE - s * self.slot if s >= 0 else 0.0  # time into the slot
         phase = np.full(n, STANCE)
         magnet = np.ones(n)
         # base: s full slots plus the minimum-jerk share of the current one
         shift = g.step_length / n
         u, du, ddu = min_jerk(tau / self.slot) if s >= 0 else (0.0, 0.0, 0.0)
-        travel = (max(s, 0) + u) * shift
-        base_pos = self.base_start + travel * self.direction
+        base_pos = self.base_start + ((max(s, 0) + u) * shift) * self.direction
         base_vel = (du * shift / self.slot) * self.direction
         base_acc = (ddu * shift / self.slot**2) * self.direction
-        zeros = np.zeros(3)
-        leg, pos, vel, acc = -1, zeros, zeros, zeros
+        leg, pos, vel, acc = -1, ZERO3, ZERO3, ZERO3
         if s >= 0:
             leg = self.order[s % n]
-            start = self.soles_start[leg] + done[leg] * g.step_length * self.direction
+            start = self.soles_start[leg] + ((s // n) * g.step_length) * self.direction
             goal = start + g.step_length * self.direction
             if tau < g.release:
                 phase[leg], magnet[leg], pos = RELEASE, 0.0, start
@@ -137,7 +127,6 @@ class GaitPlan:
         half = g.swing / 2
         mid = 0.5 * (start + goal) + g.swing_height * self.normal
         mid_vel = (goal - start) / g.swing * 1.5  # matches a cubic's peak speed
-        zero = np.zeros(3)
         if u < 0.5:
-            return hermite(start, zero, mid, mid_vel, u / 0.5, half)
-        return hermite(mid, mid_vel, goal, zero, (u - 0.5) / 0.5, half)
+            return hermite(start, ZERO3, mid, mid_vel, u / 0.5, half)
+        return hermite(mid, mid_vel, goal, ZERO3, (u - 0.5) / 0.5, half)

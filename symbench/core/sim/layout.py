@@ -59,10 +59,10 @@ class ModelLayout:
             reduced=np.concatenate([base_dof + np.arange(6), dof.reshape(-1)]),
         )
 
-    def contact_flags(self, model, data, within: float) -> np.ndarray:
-        """(n,) True where MuJoCo's signed distance between that leg's sole and the
-        climbing surface is below `within` (the spec's contact distance, 5 mm)."""
+    def sole_distances(self, model, data, cap: float) -> np.ndarray:
+        """(n,) MuJoCo's signed distance between each sole and the climbing surface (values
+        above `cap` come back as `cap`)."""
         import mujoco
 
-        return np.array([mujoco.mj_geomDistance(model, data, g, self.surface_geom, 2 * within, None)
-                         < within for g in self.sole_geom])
+        return np.array([mujoco.mj_geomDistance(model, data, g, self.surface_geom, cap, None)
+                         for g in self.sole_geom])

@@ -24,11 +24,13 @@ JOINT_AXES = ((0.0, 0.0, 1.0), (0.0, -1.0, 0.0), (0.0, -1.0, 0.0))
 # Collision bits: the surface touches robot geoms, robot geoms never touch each other.
 SURFACE_BITS, ROBOT_BITS = (1, 2), (2, 1)
 # The magnet presses a light foot with 147 N: MuJoCo's default soft contact would let it sink
-# 6 mm, so the soles get the stiffest stable contact (time constant of two steps; about
-# 1-2 mm under the full pull). No contact margin: a margin would hold the sole off the
-# surface by the margin; the adhesion acts on touching soles only.
+# 6 mm, so the soles get the stiffest stable contact (time constant of two steps; 1.8 mm
+# under the full pull). The adhesion acts only on contacts MuJoCo detects, so the soles get
+# a 2 mm margin: the magnet attracts a sole within 2 mm of the surface, and under the full
+# pull the sole rests 0.2 mm from it (a released foot floats 1.9 mm off it).
 SOLE_SOLREF = (0.002, 1.0)
 SOLE_SOLIMP = (0.95, 0.99, 0.001, 0.5, 2.0)
+SOLE_MARGIN = 0.002  # m
 
 
 def joint_name(leg: int, joint: str) -> str:
@@ -129,7 +131,7 @@ def _add_leg(spec_mj, base, spec: RobotSpec, i: int) -> None:
     parent.add_geom(name=sole_name(i), type=mujoco.mjtGeom.mjGEOM_SPHERE, size=[r, 0, 0],
                     pos=[reach - r, 0, 0], contype=ROBOT_BITS[0], conaffinity=ROBOT_BITS[1],
                     friction=[spec.magnet.friction, 0.0, 0.0], condim=3,
-                    solref=list(SOLE_SOLREF), solimp=list(SOLE_SOLIMP))
+                    solref=list(SOLE_SOLREF), solimp=list(SOLE_SOLIMP), margin=SOLE_MARGIN)
     _visual_capsule(parent, reach - r, 0.02)
     for joint in JOINT_NAMES:
         _add_joint_servo(spec_mj, joint_name(i, joint), spec)

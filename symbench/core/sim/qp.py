@@ -21,25 +21,30 @@ class DenseQP:
     def __init__(self, n: int, n_eq: int, n_in: int, eps_abs: float = EPS_ABS):
         import proxsuite
 
-        self._qp = proxsuite.proxqp.dense.QP(n, n_eq, n_in)
-        settings = self._qp.settings
-        settings.eps_abs = eps_abs
+        self._proxqp = proxsuite.proxqp
+        self._dims, self._eps = (n, n_eq, n_in), eps_abs
+        self._solved = proxsuite.proxqp.QPSolverOutput.PROXQP_SOLVED
+        self._qp = None
+
+    def _fresh(self):
+        qp = self._proxqp.dense.QP(*self._dims)
+        settings = qp.settings
+        settings.eps_abs = self._eps
         settings.eps_rel = 0.0
         settings.max_iter = 10_000
         settings.verbose = False
-        settings.initial_guess = proxsuite.proxqp.InitialGuess.WARM_START_WITH_PREVIOUS_RESULT
-        self._solved = proxsuite.proxqp.QPSolverOutput.PROXQP_SOLVED
-        self._ready = False
+        settings.initial_guess = self._proxqp.InitialGuess.WARM_START_WITH_PREVIOUS_RESULT
+        return qp
 
     def solve(self, H, g, A, b, C, l, u) -> np.ndarray:
         """The minimiser; a warm start that fails is retried cold, then InfeasibleQP."""
-        if self._ready:
-            self._qp.update(H, g, A, b, C, l, u)
+        if self._qp is not None:
+            self._qp.update(H, g, A, b, C, l, u, update_preconditioner=False)
             self._qp.solve()
             if self._qp.results.info.status == self._solved:
                 return self._qp.results.x
-        self._qp.init(H, g, A, b, C, l, u)
-        self._ready = True
+        self._qp = self._fresh()
+        self._qp.init(H, g, A, b, C, l, u, compute_preconditioner=False)
         self._qp.solve()
         if self._qp.results.info.status != self._solved:
             raise InfeasibleQP(f"whole-body QP not solved ({self._qp.results.info.status})")

@@ -1,14 +1,19 @@
 """Run the controller in the climbing environment and record raw trajectories.
 
 Per control step (1 kHz, the physics step): read the state x_t (dm-control keeps position-
-and velocity-dependent quantities of x_t up to date), compute the torques, record x_t, step,
-then record the acceleration MuJoCo used to integrate from x_t (data.qacc: joint qdd, and the
-base origin's world-frame acceleration, which excludes gravity by construction). Rows are
-kept every `record_period` seconds.
+and velocity-dependent quantities of x_t up to date), compute the servo commands, record
+x_t, step, then record what the step did. MuJoCo's implicit integrator applies the servo
+damping (and the ankle dampers) at the end-of-step velocity, so the torque the joints
+really received is clip(u - Kp q_t - Kd qd_t+1) and the acceleration they really had is
+(qd_t+1 - qd_t) / dt: those are recorded, so that tau and qdd obey the same dynamics
+(`data.qacc`, the explicit forward acceleration, would not). base_linacc likewise is the
+change of the base origin's world velocity over the step, which excludes gravity.
+Rows are kept every `record_period` seconds.
 """
 
 from __future__ import annotations
 
+import math
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -20,9 +25,10 @@ from symbench.core.raw import validate_raw
 from symbench.core.scenario import Scenario
 from symbench.core.sim.controller import ControlOutput, WholeBodyController
 from symbench.core.sim.gait import STANCE, SWING
+from symbench.core.sim.model import SOLE_MARGIN
 from symbench.core.sim.setup import Climb
 
-BASE_TILT_LIMIT = np.radians(30.0)  # base normal vs surface normal: beyond this it fell
+COS_TILT_LIMIT = np.cos(np.radians(30.0))  # base normal vs surface normal: beyond, it fell
 
 
 @dataclass
@@ -73,13 +79,15 @@ def run_climb(climb: Climb, seconds: float, record_period: float = 0.006,
     cols = rec.cols
     normal, height0 = task.plan.normal, float(task.plan.base_start @ task.plan.normal)
     action = np.zeros(model.nu)
+    kp, kd, limit = spec.control.kp, spec.control.kd, spec.control.torque_limit
     failure = None
     stats = _Stats(spec.n_legs)
     wall = time.perf_counter()
     for step in range(n_steps):
         t = data.time
-        contact = physics.contact_flags()
-        out = controller(data, t, contact)
+        distance = physics.sole_distances()
+        contact = distance < spec.magnet.contact_distance
+        out = controller(data, t, distance < SOLE_MARGIN)
         action[lay.motor] = out.command
         action[lay.magnet] = out.magnet
         row = rec.rows if step % every == 0 else -1
@@ -90,18 +98,23 @@ def run_climb(climb: Climb, seconds: float, record_period: float = 0.006,
             cols["base_quat"][row] = data.qpos[3:7]
             cols["base_linvel"][row] = data.qvel[:3]
             cols["base_angvel"][row] = r_base @ data.qvel[3:6]
-            cols["q"][row] = data.qpos[lay.qpos]
-            cols["qd"][row] = data.qvel[lay.dof]
+            cols["q"][row] = q_now = data.qpos[lay.qpos]
+            cols["qd"][row] = qd_now = data.qvel[lay.dof]
+            linvel_now = data.qvel[:3].copy()
             cols["contact"][row] = contact
             cols["magnet"][row] = out.magnet > 0.0
         stats.update(out, data, lay, task.plan)
-        env.step(action)
+        # the Environment's step without building observations nobody reads here
+        task.before_step(action, physics)
+        physics.step()
+        task.after_step(physics)
         if on_step is not None:
             on_step(out, physics)
         if row >= 0:
-            cols["tau"][row] = data.actuator_force[lay.motor]  # what MuJoCo applied
-            cols["qdd"][row] = data.qacc[lay.dof]
-            cols["base_linacc"][row] = data.qacc[:3]
+            qd_next = data.qvel[lay.dof]
+            cols["tau"][row] = np.clip(out.command - kp * q_now - kd * qd_next, -limit, limit)
+            cols["qdd"][row] = (qd_next - qd_now) / dt
+            cols["base_linacc"][row] = (data.qvel[:3] - linvel_now) / dt
             rec.rows += 1
         failure = _detached(out, contact, data, lay, normal, height0)
         if failure is not None:
@@ -117,11 +130,11 @@ def run_climb(climb: Climb, seconds: float, record_period: float = 0.006,
 
 
 def _detached(out: ControlOutput, contact: np.ndarray, data, lay, normal, height0) -> str | None:
-    lost = np.flatnonzero((out.targets.phase == STANCE) & ~contact)
-    if lost.size:
-        return f"stance foot of leg(s) {', '.join(map(str, lost))} left the surface"
-    r_base = data.xmat[lay.base_body].reshape(3, 3)
-    if np.arccos(np.clip(r_base[:, 2] @ normal, -1, 1)) > BASE_TILT_LIMIT:
+    lost = (out.targets.phase == STANCE) & ~contact
+    if lost.any():
+        return f"stance foot of leg(s) {', '.join(map(str, np.flatnonzero(lost)))} left the surface"
+    base_z = data.xmat[lay.base_body][2::3]  # third column of R_wb: the base normal
+    if base_z @ normal < COS_TILT_LIMIT:
         return "base tilted more than 30 degrees from the surface normal"
     height = data.qpos[:3] @ normal
     if height < 0.3 * height0:
@@ -142,12 +155,12 @@ class _Stats:
         if self.start is None:
             self.start = data.qpos[:3].copy()
         tg = out.targets
-        self.base_err.append(float(np.linalg.norm(tg.base_pos - data.qpos[:3])))
+        self.base_err.append(math.dist(tg.base_pos, data.qpos[:3]))
         if tg.step_leg >= 0 and tg.phase[tg.step_leg] == SWING:
             ankle = data.xpos[lay.ankle_body[tg.step_leg]]
             target = tg.sole_pos + plan.spec.leg.lengths["foot"] * plan.normal
-            self.swing_err.append(float(np.linalg.norm(target - ankle)))
-        self.peak_tau = np.maximum(self.peak_tau, np.abs(out.tau).max(axis=0))
+            self.swing_err.append(math.dist(target, ankle))
+        np.maximum(self.peak_tau, np.abs(out.tau).max(axis=0), out=self.peak_tau)
 
     def summary(self, spec, data, plan) -> dict[str, float]:
         base = np.asarray(self.base_err)

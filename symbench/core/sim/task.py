@@ -49,8 +49,12 @@ class Physics(dm_mujoco.Physics):
         r = self.data.xmat[self.layout.base_body].reshape(3, 3)
         return r @ self.data.qvel[3:6]
 
+    def sole_distances(self) -> np.ndarray:
+        return self.layout.sole_distances(self.model.ptr, self.data.ptr, 2 * self.contact_distance)
+
     def contact_flags(self) -> np.ndarray:
-        return self.layout.contact_flags(self.model.ptr, self.data.ptr, self.contact_distance)
+        """The foot is in contact when its sole is within the spec's contact distance."""
+        return self.sole_distances() < self.contact_distance
 
     def magnet_controls(self) -> np.ndarray:
         return self.data.ctrl[self.layout.magnet].copy()

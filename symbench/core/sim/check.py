@@ -1,0 +1,32 @@
+"""`symbench sim check`: does the controller climb? One rollout, judged and summarised."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from symbench.core.scenario import Scenario
+from symbench.core.sim.rollout import run_climb
+from symbench.core.sim.setup import Climb
+
+
+@dataclass(frozen=True)
+class CheckReport:
+    scenario: dict
+    attached: bool
+    failure: str | None
+    metrics: dict[str, float]
+
+    @property
+    def torque_within_limit(self) -> bool:
+        peak = max(self.metrics[f"peak_torque_{j}"] for j in ("coxa", "femur", "tibia"))
+        return peak <= self.metrics["torque_limit"] + 1e-9
+
+    def to_dict(self) -> dict:
+        return {"scenario": self.scenario, "attached": self.attached, "failure": self.failure,
+                "torque_within_limit": self.torque_within_limit, **self.metrics}
+
+
+def check(scenario: Scenario) -> CheckReport:
+    """Run `scenario` with the whole-body controller (recording nothing it does not need)."""
+    rollout = run_climb(Climb.from_scenario(scenario), scenario.seconds)
+    return CheckReport(scenario.to_dict(), rollout.attached, rollout.failure, rollout.metrics)

@@ -1,0 +1,60 @@
+"""`symbench sim ...`: simulator commands (imported only when invoked)."""
+
+from __future__ import annotations
+
+import json
+import sys
+
+import click
+
+from symbench.core.scenario import DIRECTIONS
+
+
+@click.group("sim")
+def sim() -> None:
+    """The climbing simulator: MuJoCo + dm-control, gait planner, whole-body controller."""
+
+
+@sim.command("check")
+@click.option("--robot", required=True, help="Registered robot, e.g. hexa.")
+@click.option("--inclination", type=float, default=90.0, show_default=True,
+              help="Surface inclination in degrees: 0 floor, 90 wall, 180 ceiling.")
+@click.option("--heading", type=float, default=0.0, show_default=True,
+              help="Slope heading: rotation of the scene about gravity, degrees.")
+@click.option("--yaw", type=float, default=0.0, show_default=True,
+              help="Initial base yaw relative to the slope, degrees.")
+@click.option("--direction", type=click.Choice(list(DIRECTIONS)), default="forward",
+              show_default=True, help="Step direction in the body frame.")
+@click.option("--seconds", type=float, default=10.0, show_default=True)
+@click.option("--seed", type=int, default=0, show_default=True)
+@click.option("--json", "as_json", is_flag=True, help="Print JSON.")
+def check_command(robot: str, inclination: float, heading: float, yaw: float, direction: str,
+                  seconds: float, seed: int, as_json: bool) -> None:
+    """Run the controller; exit status 1 when the robot detached."""
+    from symbench.core.scenario import Scenario
+    from symbench.core.sim.check import check
+
+    scenario = Scenario(robot, inclination, heading, yaw, direction, None, seed, seconds)
+    report = check(scenario)
+    if as_json:
+        click.echo(json.dumps(report.to_dict(), indent=2))
+    else:
+        _print_report(report)
+    if not report.attached:
+        sys.exit(1)
+
+
+def _print_report(report) -> None:
+    m, s = report.metrics, report.scenario
+    state = "attached" if report.attached else f"DETACHED ({report.failure})"
+    click.echo(f"{s['robot']} at {s['inclination_deg']:g} deg (heading {s['heading_deg']:g}, "
+               f"yaw {s['yaw_deg']:g}, {s['direction']}), {m['sim_seconds']:.2f} s: {state}")
+    click.echo(f"  walked {m['distance_walked'] * 100:.1f} cm along the commanded direction")
+    click.echo(f"  base tracking error: rms {m['base_error_rms'] * 1000:.1f} mm, "
+               f"max {m['base_error_max'] * 1000:.1f} mm")
+    click.echo(f"  swing ankle error:   rms {m['swing_error_rms'] * 1000:.1f} mm, "
+               f"max {m['swing_error_max'] * 1000:.1f} mm")
+    click.echo(f"  peak torque (coxa/femur/tibia): {m['peak_torque_coxa']:.2f} / "
+               f"{m['peak_torque_femur']:.2f} / {m['peak_torque_tibia']:.2f} N m, "
+               f"limit {m['torque_limit']:g} N m")
+    click.echo(f"  real-time factor: {m['real_time_factor']:.2f}")

@@ -1,0 +1,131 @@
+"""The climbing loop: contact flags, recorded columns, symmetry, the dm-control API, the CLI."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+from click.testing import CliRunner
+
+from symbench.core.cli import build_cli
+from symbench.core.errors import SymbenchError
+from symbench.core.raw import COLUMN_NAMES
+from symbench.core.robots import load_robot
+from symbench.core.scenario import Scenario
+from symbench.core.sim.arena import Arena
+from symbench.core.sim.gait import SETTLE
+from symbench.core.sim.rollout import run_climb, simulate
+from symbench.core.sim.setup import Climb
+from symbench.core.sim.symmetry import symmetry_error
+
+
+def test_contact_flag_follows_a_lifted_foot_on_a_wall():
+    """Leg 0 swings first: its flag is true while down, false in the air, true once landed."""
+    spec = load_robot("hexa")
+    rollout = run_climb(Climb(spec, Arena(90.0, 0.0)), 1.15)
+    assert rollout.attached, rollout.failure
+    a, g = rollout.arrays, spec.gait
+    t, contact = a["t"], a["contact"][:, 0].astype(bool)
+    lift = SETTLE + g.release
+    land = lift + g.swing
+    assert contact[t < lift].all()
+    mid_swing = (t > lift + 0.1) & (t < land - 0.1)
+    assert mid_swing.any() and not contact[mid_swing].any()
+    assert contact[t > land + g.touchdown].all()
+    assert a["contact"][:, 1:].all()  # the other feet never leave
+    assert a["magnet"][t < SETTLE, 0].all()
+    assert not a["magnet"][(t >= SETTLE) & (t < land), 0].any()  # released, then swinging
+    assert a["magnet"][t > land, 0].all()
+
+
+def test_recorded_columns_are_consistent():
+    """Raw schema columns, rows aligned: positions integrate with the next velocities
+    (semi-implicit Euler), velocities with the recorded accelerations."""
+    spec = load_robot("magneto")
+    rollout = run_climb(Climb(spec, Arena(30.0, 45.0), yaw_deg=20.0), 0.3, record_period=0.001)
+    a = rollout.arrays
+    assert set(a) == set(COLUMN_NAMES)
+    dt = spec.control.timestep
+    np.testing.assert_allclose(np.diff(a["q"], axis=0), dt * a["qd"][1:], atol=1e-12)
+    np.testing.assert_allclose(np.diff(a["base_pos"], axis=0), dt * a["base_linvel"][1:], atol=1e-12)
+    np.testing.assert_allclose(np.diff(a["qd"], axis=0), dt * a["qdd"][:-1], atol=1e-9)
+    np.testing.assert_allclose(np.diff(a["base_linvel"], axis=0), dt * a["base_linacc"][:-1],
+                               atol=1e-9)
+    assert np.abs(a["tau"]).max() <= spec.control.torque_limit + 1e-9
+
+
+def test_simulate_records_every_six_milliseconds():
+    rollout = simulate(Scenario("nona", inclination_deg=60, seconds=0.3))
+    assert rollout.attached
+    np.testing.assert_allclose(np.diff(rollout.arrays["t"]), 0.006, atol=1e-12)
+    assert rollout.arrays["q"].shape == (50, 9, 3)
+
+
+def test_hexa_rotated_relabelled_run_reproduces_the_original():
+    """60 degrees of base yaw + relabelling by one leg: same run, to 1e-6, over 1 s."""
+    climb = Climb(load_robot("hexa"), Arena(60.0, 30.0), yaw_deg=10.0, seed=1)
+    worst, per_column, rollout = symmetry_error(climb, 1.0)
+    assert rollout.attached
+    for col in ("q", "qd", "tau", "contact", "magnet", "base_pos", "base_linvel"):
+        assert per_column[col] < 1e-6, (col, per_column[col])
+    # accelerations in stiff magnetic contacts reach 1e3 rad/s^2: compare relatively
+    assert per_column["qdd"] < 1e-6 * np.abs(rollout.arrays["qdd"]).max()
+
+
+def test_symmetry_check_can_fail():
+    """A twin that is rotated but not relabelled must not match: the test has teeth."""
+    from dataclasses import replace
+
+    from symbench.core.sim import symmetry
+
+    climb = Climb(load_robot("magneto"), Arena(0.0, 0.0))
+    original = symmetry.rotated_twin
+    try:
+        symmetry.rotated_twin = lambda c: replace(c, yaw_deg=c.yaw_deg + 90.0)
+        worst, _, _ = symmetry_error(climb, 0.3)
+    finally:
+        symmetry.rotated_twin = original
+    assert worst > 1e-3
+
+
+def test_dm_control_environment():
+    from dm_control.rl import control
+
+    from symbench.core.sim.task import load
+
+    env = load("magneto", inclination_deg=90, heading_deg=30, yaw_deg=15, seed=3, time_limit=0.01)
+    assert isinstance(env, control.Environment)
+    assert env.action_spec().shape == (16,)
+    step = env.reset()
+    assert step.observation["q"].shape == (4, 3)
+    assert step.observation["contact"].all()
+    while not step.last():
+        step = env.step(np.zeros(16))
+    assert env.physics.data.time == pytest.approx(0.01)
+
+
+def test_bad_input_is_named():
+    with pytest.raises(SymbenchError, match="record_period"):
+        run_climb(Climb(load_robot("hexa"), Arena()), 0.01, record_period=0.0025)
+    with pytest.raises(SymbenchError, match="leg order"):
+        run_climb(Climb(load_robot("hexa"), Arena(), order=(0, 1, 2)), 0.01)
+    with pytest.raises(SymbenchError, match="inclination"):
+        Arena(190.0)
+
+
+def test_sim_check_and_bench_commands():
+    runner = CliRunner()
+    cli = build_cli()
+    result = runner.invoke(cli, ["sim", "check", "--robot", "hexa", "--inclination", "30",
+                                 "--seconds", "0.4", "--json"])
+    assert result.exit_code == 0, result.output
+    report = json.loads(result.output)
+    assert report["attached"] and report["torque_within_limit"]
+    assert report["peak_torque_femur"] <= report["torque_limit"]
+    result = runner.invoke(cli, ["bench", "sim", "--robot", "magneto", "--seconds", "0.3", "--json"])
+    assert result.exit_code == 0, result.output
+    bench = json.loads(result.output)
+    assert bench["ratio"] == pytest.approx(bench["controlled_steps_per_s"] / bench["raw_mj_step_per_s"])
+    result = runner.invoke(cli, ["sim", "check", "--robot", "hexx"])
+    assert result.exit_code != 0 and "hexa" in result.output
