@@ -114,3 +114,17 @@ def test_recorded_contact_and_magnet_flags_match_the_physics(robot, inclination)
     assert checked > 100
     assert raw["contact"].min() == 0 and raw["magnet"].min() == 0  # a foot did swing
     assert raw["contact"].max() == 1 and raw["magnet"].max() == 1
+
+
+def test_generating_the_smoke_preset_twice_gives_the_same_hash(tmp_path, monkeypatch):
+    """`symbench data generate --robot hexa --preset smoke`, twice, with 1 and 2 workers."""
+    from symbench.core.data.generation import generate
+
+    reports = []
+    for workers in (1, 2):
+        monkeypatch.setenv("SYMBENCH_HOME", str(tmp_path / f"w{workers}"))
+        reports.append(generate("hexa", "smoke", workers=workers, show_progress=False))
+    a, b = reports
+    assert a.content_hash == b.content_hash and a.n_trajectories + a.n_failed == 4
+    for path in sorted((a.root / "trajectories").iterdir()):
+        assert path.read_bytes() == (b.root / "trajectories" / path.name).read_bytes()

@@ -20,6 +20,7 @@ from pathlib import Path
 from typing import Any
 
 from symbench.core.data.columns import check_flags
+from symbench.core.data.determinism import pin_portable_qp_build, portable_qp_in_process
 from symbench.core.data.metadata import dataset_dir, library_versions, write_metadata
 from symbench.core.data.presets import RECORD_PERIOD, dataset_id, preset, rotation_order
 from symbench.core.data.storage import atomic_write_json, read_json, sha256_file, write_trajectory
@@ -72,6 +73,7 @@ def trajectory_file(index: int) -> str:
 
 def run_task(task: Task) -> dict[str, Any]:
     """Simulate one scenario, write its file and record; return the record."""
+    pin_portable_qp_build()
     record: dict[str, Any] = {"id": task.index, "scenario": task.scenario, "key": task.key}
     try:
         rollout = task.simulator(Scenario.from_dict(task.scenario),
@@ -111,8 +113,9 @@ def finished_record(task: Task) -> dict[str, Any] | None:
     return record
 
 
-def _run_all(tasks: Sequence[Task], workers: int, on_done: Callable[[dict], None]) -> None:
-    if workers <= 1 or len(tasks) <= 1:
+def _run_all(tasks: Sequence[Task], workers: int, on_done: Callable[[dict], None],
+             in_process: bool) -> None:
+    if in_process:
         for task in tasks:
             on_done(run_task(task))
         return
@@ -146,6 +149,8 @@ def generate(robot: str, preset_name: str = "small", workers: int = 1,
     key = {"raw_schema_version": SCHEMA_VERSION, "robot_spec_hash": spec.spec_hash(),
            "record_period_s": RECORD_PERIOD, "versions": library_versions()}
     sim = simulator or default_simulator()
+    # the real simulator runs in this process only if its QP build here is reproducible
+    in_process = workers <= 1 and (simulator is not None or portable_qp_in_process())
     tasks = [Task(i, s.to_dict(), root, spec.n_legs, key, sim) for i, s in enumerate(scenarios)]
     records: dict[int, dict[str, Any]] = {}
     for task in tasks:
@@ -160,7 +165,7 @@ def generate(robot: str, preset_name: str = "small", workers: int = 1,
             advance(rec)
 
         try:
-            _run_all(todo, workers, on_done)
+            _run_all(todo, workers, on_done, in_process)
         except KeyboardInterrupt:
             raise SymbenchError(f"interrupted with {len(records)} of {len(tasks)} trajectories "
                                 "done; run the same command again to resume") from None
