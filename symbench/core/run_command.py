@@ -1,29 +1,55 @@
-"""`symbench run`: train and evaluate one model on one robot."""
+"""`symbench run`: train and evaluate one model on one robot, print a table, write a record."""
 
 from __future__ import annotations
 
-import click
+from pathlib import Path
 
-from symbench.core import registry
-from symbench.core.errors import SymbenchError
+import click
+from rich.console import Console
+from rich.table import Table
+
+from symbench.core.results import ResultRecord
+from symbench.core.runner import DEFAULT_EVALUATORS, RunSpec, run as run_spec
 
 
 @click.command("run")
-@click.option("--model", "model_name", required=True, help="Registered model name, e.g. sdnn.")
+@click.option("--model", "model_name", required=True, help="Registered model, e.g. sdnn.")
 @click.option("--robot", "robot_name", required=True, help="Registered robot, e.g. hexa.")
 @click.option("--backend", default="torch", show_default=True, help="torch or jax.")
+@click.option("--split", default="iid", show_default=True, help="A registered split.")
+@click.option("--seed", default=0, show_default=True, type=int)
 @click.option("--preset", default="small", show_default=True, help="smoke, small or paper.")
-def run(model_name: str, robot_name: str, backend: str, preset: str) -> None:
+@click.option("--evaluators", default=",".join(DEFAULT_EVALUATORS), show_default=True,
+              help="Comma-separated evaluator names (see `symbench list evaluators`).")
+@click.option("--output", type=click.Path(path_type=Path), default=Path("results"),
+              show_default=True, help="Folder for the record, checkpoints and plots.")
+@click.option("--workers", default=2, show_default=True, type=int,
+              help="Processes for dataset generation.")
+@click.option("--max-epochs", type=int, default=None, help="Override the preset's epoch cap.")
+def run(model_name: str, robot_name: str, backend: str, split: str, seed: int, preset: str,
+        evaluators: str, output: Path, workers: int, max_epochs: int | None) -> None:
     """Train and evaluate MODEL on ROBOT (generating the dataset when missing)."""
-    missing = []
-    for kind, name in (("models", model_name), ("robots", robot_name)):
-        if not registry.collect(kind):
-            missing.append(f"no {kind} are registered yet")
-    if missing:
-        raise SymbenchError(
-            "symbench run is not built yet: " + "; ".join(missing)
-            + ". The simulator, datasets, models and training land in issues 3 to 6."
-        )
-    registry.model(model_name, backend)
-    registry.robot(robot_name)
-    raise SymbenchError(f"symbench run: training and evaluation (preset {preset}) are not built yet")
+    console = Console()
+    spec = RunSpec(model=model_name, robot=robot_name, backend=backend, split=split, seed=seed,
+                   preset=preset, evaluators=tuple(e.strip() for e in evaluators.split(",") if e.strip()),
+                   output=output, workers=workers, max_epochs=max_epochs)
+    record = run_spec(spec, on_stage=lambda stage: console.print(f"[bold]{stage}[/]"))
+    console.print(metrics_table(record))
+    console.print(f"result record: {spec.record_path}")
+
+
+def metrics_table(record: ResultRecord) -> Table:
+    """The record's scalar metrics, one row each."""
+    m = record.model
+    table = Table(title=f"{m.name} ({m.backend}) on {record.robot}, split {record.split}, "
+                        f"seed {record.seed}, {record.samples.train} training samples")
+    table.add_column("evaluator")
+    table.add_column("metric")
+    table.add_column("value", justify="right")
+    for evaluator, metrics in record.metrics.items():
+        for name, value in metrics.items():
+            if isinstance(value, (int, float)) and not isinstance(value, bool):
+                table.add_row(evaluator, name, f"{value:.4g}")
+            elif isinstance(value, bool):
+                table.add_row(evaluator, name, str(value))
+    return table

@@ -1,0 +1,137 @@
+"""One benchmark run: dataset -> split -> training -> evaluators -> validated result record.
+
+Every model of a comparison goes through this same path, so they see the same samples, the
+same protocol and the same evaluators; the record says exactly what was done.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from datetime import datetime, timezone
+from pathlib import Path
+
+from symbench.core import registry
+from symbench.core.errors import SymbenchError
+from symbench.core.evaluation import EvaluationContext, TrainedOnSplit, run_evaluators
+from symbench.core.provenance import git_commit, hardware, library_versions
+from symbench.core.results import ResultRecord, write_record
+
+# Epoch caps of the training protocol per preset (the stopping rule usually ends earlier).
+MAX_EPOCHS = {"smoke": 3, "small": 60, "paper": 500}
+DEFAULT_EVALUATORS = ("torque-error", "equivariance", "invariance", "generalization",
+                      "closed-loop")
+
+
+@dataclass(frozen=True)
+class RunSpec:
+    model: str
+    robot: str
+    backend: str = "torch"
+    split: str = "iid"
+    seed: int = 0
+    preset: str = "small"
+    evaluators: tuple[str, ...] = DEFAULT_EVALUATORS
+    output: Path = Path("results")
+    workers: int = 2
+    progress: bool = True
+    max_epochs: int | None = None  # None: the preset's cap
+
+    def key(self) -> str:
+        return f"{self.robot}__{self.split}__{self.model}__{self.backend}__seed{self.seed}"
+
+    @property
+    def record_path(self) -> Path:
+        return self.output / f"{self.key()}.json"
+
+
+@dataclass
+class Timer:
+    timings: dict[str, float] = field(default_factory=dict)
+
+    def measure(self, name: str, fn: Callable, *args, **kwargs):
+        start = time.perf_counter()
+        try:
+            return fn(*args, **kwargs)
+        finally:
+            self.timings[name] = self.timings.get(name, 0.0) + time.perf_counter() - start
+
+
+def check_names(spec: RunSpec) -> None:
+    """Every name resolves before any minute is spent (closest names otherwise)."""
+    registry.model(spec.model, spec.backend)
+    registry.robot(spec.robot)
+    registry.split(spec.split)
+    for name in spec.evaluators:
+        registry.evaluator(name)
+    if spec.preset not in MAX_EPOCHS:
+        from symbench.core.errors import UnknownNameError
+
+        raise UnknownNameError("preset", spec.preset, MAX_EPOCHS)
+
+
+def ensure_dataset(spec: RunSpec):
+    """The preset's dataset for the robot, generated first when it is not in the cache."""
+    from symbench.core.data.generation import ensure_dataset as ensure
+
+    return ensure(spec.robot, spec.preset, spec.workers, show_progress=spec.progress)
+
+
+def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> ResultRecord:
+    """Train and evaluate one model; writes and returns the validated record."""
+    from symbench.core.training import TrainConfig, train
+
+    check_names(spec)
+    entry = registry.model(spec.model, spec.backend)
+    timer = Timer()
+    on_stage("dataset")
+    dataset = timer.measure("dataset_s", ensure_dataset, spec)
+    config = TrainConfig(seed=spec.seed, max_epochs=spec.max_epochs or MAX_EPOCHS[spec.preset],
+                         progress=spec.progress)
+    checkpoints = spec.output / "checkpoints" / spec.key()
+
+    def train_on(split: str):
+        parts = dataset.split_indices(split, spec.seed)
+        train_set, val_set, test_set = dataset.split_views(entry.view, entry.variant, split, spec.seed)
+        model = train(entry, train_set, val_set, config, checkpoint_dir=checkpoints / split)
+        return model, parts, (train_set, val_set, test_set)
+
+    on_stage("training")
+    model, parts, (train_set, val_set, test_set) = timer.measure("training_s", train_on, spec.split)
+
+    def retrain(split: str) -> TrainedOnSplit:
+        on_stage(f"training on {split}")
+        other, _, (_, _, other_test) = timer.measure("retraining_s", train_on, split)
+        return TrainedOnSplit(split, other.predict, other_test)
+
+    context = EvaluationContext(entry=entry, dataset=dataset, split=spec.split, seed=spec.seed,
+                                predict=model.predict, test=test_set,
+                                test_trajectories=parts.test, output_dir=spec.output,
+                                retrain=retrain)
+    metrics = timer.measure("evaluation_s", run_evaluators, list(spec.evaluators), context,
+                            lambda name: on_stage(f"evaluating {name}"))
+    record = ResultRecord(
+        created=datetime.now(timezone.utc).isoformat(timespec="seconds"),
+        model={"name": entry.name, "backend": entry.backend, "view": entry.view,
+               "variant": entry.variant, "equivariant": entry.equivariant,
+               "hyperparameters": model.hyper,
+               "learning_rate": model.config.get("learning_rate") or entry.learning_rate,
+               "parameters": model.n_params},
+        robot=spec.robot,
+        dataset={"id": dataset.id, "content_hash": dataset.content_hash,
+                 "robot_spec_hash": dataset.metadata["robot_spec_hash"], "preset": spec.preset},
+        split=spec.split, seed=spec.seed,
+        samples={"train": len(train_set), "val": len(val_set), "test": len(test_set),
+                 "train_trajectories": len(parts.train), "val_trajectories": len(parts.val),
+                 "test_trajectories": len(parts.test)},
+        training={"epochs": len(model.history["train_loss"]), "best_epoch": model.best_epoch,
+                  "stopped_early": "max_epochs" not in model.stopped,
+                  "best_val_loss": float(min(model.history["val_loss"])),
+                  "batch_size": config.batch_size},
+        metrics=metrics, timings_s=timer.timings, hardware=hardware(),
+        versions=library_versions(), git_commit=git_commit(),
+    )
+    if record.key() != spec.key():
+        raise SymbenchError(f"internal: record key {record.key()} != run key {spec.key()}")
+    return write_record(record, spec.record_path)
