@@ -56,5 +56,5 @@ def _print_report(report) -> None:
                f"max {m['swing_error_max'] * 1000:.1f} mm")
     click.echo(f"  peak torque (coxa/femur/tibia): {m['peak_torque_coxa']:.2f} / "
                f"{m['peak_torque_femur']:.2f} / {m['peak_torque_tibia']:.2f} N m, "
-               f"limit {m['torque_limit']:g} N m")
+               f"limit {m['torque_limit']:g} N m ({m['clipped_fraction']:.1%} of torques at the clip)")
     click.echo(f"  real-time factor: {m['real_time_factor']:.2f}")

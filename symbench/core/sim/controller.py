@@ -108,6 +108,10 @@ class WholeBodyController:
         self._jb = np.zeros((n, 3, 6))
         self._jb[:, :, :3] = np.eye(3)
         self._cone_rows = 5 * self._legs[:, None] + np.arange(5)[None, :]
+        k3 = np.arange(3)
+        self._tau_rows = (5 * n + 3 * self._legs[:, None, None] + k3[None, :, None]) + 0 * k3
+        self._tau_cols = (9 + 3 * self._legs[:, None, None] + k3[None, None, :]) + 0 * k3[:, None]
+        self._force_diag = np.arange(9, self.nx)
         self._h_base = np.zeros((self.nx, self.nx))  # the constant part of the Hessian
         self._h_base[:9, :9] = self.gains.w_qdd * np.eye(9)
         self._h_base[:6, :6] += self.gains.w_task * np.eye(6)  # |R a| = |a|: R is orthogonal
@@ -152,20 +156,15 @@ class WholeBodyController:
         # qdd_r = T x + c: stance legs follow the base so that their ankles do not accelerate
         # (beyond damping their residual velocity); the swing leg's joints are variables.
         jl_inv = np.linalg.inv(jl)
+        # A lifted foot that is not tracked (touchdown before contact) keeps qdd = 0.
+        follows = (down & (self._legs != swing)).astype(float)[:, None, None]
         T = np.zeros((nr, self.nx))
-        c = np.zeros(nr)
         T[:6, :6] = self._eye6
-        leg_rows = 6 + 3 * self._legs
-        stance_acc = -g.stance_kd * ankle_vel
-        follow = -jl_inv @ jb  # (n, 3, 6)
-        bias = (jl_inv @ stance_acc[..., None])[..., 0]
-        for i in range(n):  # block placement only; the maths above is batched over legs
-            if i == swing:
-                T[leg_rows[i]: leg_rows[i] + 3, 6:9] = self._eye3
-            elif down[i]:
-                T[leg_rows[i]: leg_rows[i] + 3, :6] = follow[i]
-                c[leg_rows[i]: leg_rows[i] + 3] = bias[i]
-        # a lifted foot that is not the swing leg (touchdown before contact) keeps qdd = 0
+        T[6:, :6] = (-(jl_inv @ jb) * follows).reshape(3 * n, 6)
+        c = np.zeros(nr)
+        c[6:] = ((jl_inv @ (-g.stance_kd * ankle_vel)[..., None]) * follows).reshape(-1)
+        if swing >= 0:
+            T[6 + 3 * swing: 9 + 3 * swing, 6:9] = self._eye3
 
         # --- objective ---------------------------------------------------------------------
         a_lin = tg.base_acc + g.base_kp * (tg.base_pos - data.qpos[:3]) + g.base_kd * (tg.base_vel - qvel[:3])
@@ -183,7 +182,7 @@ class WholeBodyController:
             H[:9, :9] += g.w_task * (js.T @ js)
             grad[:9] -= g.w_task * (js.T @ a_sw)
         force_w = np.where(tg.phase == RELEASE, g.w_release, g.w_force)
-        H[9:, 9:] += np.diag(np.repeat(force_w, 3))
+        H[self._force_diag, self._force_diag] += np.repeat(force_w, 3)
 
         # --- dynamics: M_r (T x + c) + h_r = S'tau + sum J_i' f_i -------------------------
         mt = m_r @ T
@@ -199,8 +198,7 @@ class WholeBodyController:
         hi[cone_rows[:, 4]] = np.where(down, INF, 0.0)
         t0 = 5 * n
         C[t0:, :] = mt[6:]
-        for i in range(n):  # tau_i = ... - J_leg_i' f_i
-            C[t0 + 3 * i: t0 + 3 * i + 3, 9 + 3 * i: 12 + 3 * i] = -jl[i].T
+        C[self._tau_rows, self._tau_cols] = -jl.transpose(0, 2, 1)  # tau_i = ... - J_leg_i' f_i
         lo[t0:], hi[t0:] = -self._tau_max - mc_h[6:], self._tau_max - mc_h[6:]
 
         try:

@@ -81,7 +81,7 @@ def run_climb(climb: Climb, seconds: float, record_period: float = 0.006,
     action = np.zeros(model.nu)
     kp, kd, limit = spec.control.kp, spec.control.kd, spec.control.torque_limit
     failure = None
-    stats = _Stats(spec.n_legs)
+    stats = _Stats()
     wall = time.perf_counter()
     for step in range(n_steps):
         t = data.time
@@ -145,10 +145,12 @@ def _detached(out: ControlOutput, contact: np.ndarray, data, lay, normal, height
 class _Stats:
     """Running tracking errors and torque peaks, for `symbench sim check`."""
 
-    def __init__(self, n_legs: int):
+    def __init__(self):
         self.base_err = []
         self.swing_err = []
         self.peak_tau = np.zeros(3)
+        self.clipped = 0
+        self.torques = 0
         self.start = None
 
     def update(self, out: ControlOutput, data, lay, plan) -> None:
@@ -160,7 +162,10 @@ class _Stats:
             ankle = data.xpos[lay.ankle_body[tg.step_leg]]
             target = tg.sole_pos + plan.spec.leg.lengths["foot"] * plan.normal
             self.swing_err.append(math.dist(target, ankle))
-        np.maximum(self.peak_tau, np.abs(out.tau).max(axis=0), out=self.peak_tau)
+        magnitude = np.abs(out.tau)
+        np.maximum(self.peak_tau, magnitude.max(axis=0), out=self.peak_tau)
+        self.clipped += int(np.count_nonzero(magnitude >= plan.spec.control.torque_limit - 1e-9))
+        self.torques += magnitude.size
 
     def summary(self, spec, data, plan) -> dict[str, float]:
         base = np.asarray(self.base_err)
@@ -176,6 +181,7 @@ class _Stats:
             "peak_torque_femur": float(self.peak_tau[1]),
             "peak_torque_tibia": float(self.peak_tau[2]),
             "torque_limit": float(spec.control.torque_limit),
+            "clipped_fraction": self.clipped / max(self.torques, 1),
         }
 
 
