@@ -1,14 +1,15 @@
 """Scenario grids of the dataset presets, and the dataset ids they produce.
 
 A grid is the product of inclinations, slope headings, initial base yaws (evenly covering
-the full circle, a whole number per fundamental sector of the robot's rotation group), step
-directions, leg orders and seeds; its order is fixed, so trajectory k of a preset is always
-the same scenario. Bump DATASET_VERSION whenever a grid or the recorded content changes.
+the full circle, a whole number per fundamental sector of the robot's rotation group, so
+that `unseen-rotation` has training data), step directions, leg orders and seeds; its order
+is fixed, so trajectory k of a preset is always the same scenario. Bump DATASET_VERSION whenever a grid or the recorded content changes.
 """
 
 from __future__ import annotations
 
 import itertools
+import math
 from dataclasses import asdict, dataclass
 from typing import Any
 
@@ -26,16 +27,17 @@ class Preset:
     description: str
     inclinations_deg: tuple[float, ...]
     headings_deg: tuple[float, ...]
-    yaws_per_sector: int  # 0: just 0 and 180 degrees, both sides of every robot's sector
+    yaws_per_turn: int  # at least this many, a whole number per sector; 0: just 0 and 180
     directions: tuple[str, ...]
     leg_orders: tuple[str, ...]
     seeds: tuple[int, ...]
     seconds: float
 
     def yaws_deg(self, rotation_order: int) -> tuple[float, ...]:
-        if self.yaws_per_sector == 0:
+        """Evenly spaced from 0; (0, 180) lies on both sides of every robot's sector."""
+        if self.yaws_per_turn == 0:
             return (0.0, 180.0)
-        n = rotation_order * self.yaws_per_sector
+        n = rotation_order * math.ceil(self.yaws_per_turn / rotation_order)
         return tuple(round(360.0 * k / n, 9) for k in range(n))
 
     def scenarios(self, robot: str, n_legs: int, rotation_order: int) -> list[Scenario]:
@@ -61,15 +63,15 @@ PRESETS: dict[str, Preset] = {
     p.name: p
     for p in (
         Preset("smoke", "a few one-second trajectories, for tests (seconds)",
-               inclinations_deg=(90.0,), headings_deg=(0.0, 180.0), yaws_per_sector=0,
+               inclinations_deg=(90.0,), headings_deg=(0.0, 180.0), yaws_per_turn=0,
                directions=("forward",), leg_orders=("default",), seeds=(0,), seconds=1.0),
         Preset("small", "the default of `symbench run`: minutes on a laptop",
                inclinations_deg=(90.0,), headings_deg=(0.0, 90.0, 180.0, 270.0),
-               yaws_per_sector=1, directions=("forward", "left"), leg_orders=("default",),
-               seeds=(0,), seconds=3.0),
+               yaws_per_turn=6, directions=("forward", "left"), leg_orders=("default",),
+               seeds=(0,), seconds=2.6),
         Preset("paper", "the full replication: slopes, headings, yaws, gaits and seeds",
                inclinations_deg=(57.29577951308232, 90.0),
-               headings_deg=(0.0, 90.0, 180.0, 270.0), yaws_per_sector=2,
+               headings_deg=(0.0, 90.0, 180.0, 270.0), yaws_per_turn=6,
                directions=("forward", "backward", "left", "right"), leg_orders=LEG_ORDERS,
                seeds=(0,), seconds=10.0),
     )
