@@ -25,7 +25,7 @@ import numpy as np
 
 from symbench.core.robots import RobotSpec
 from symbench.core.sim.gait import RELEASE, SWING, TOUCHDOWN, GaitPlan, GaitTargets
-from symbench.core.sim.kinematics import leg_ik, leg_jacobian
+from symbench.core.sim.kinematics import leg_ik
 from symbench.core.sim.layout import ModelLayout
 from symbench.core.sim.model import ankle_to_sole
 from symbench.core.sim.qp import INF, DenseQP, InfeasibleQP
@@ -116,17 +116,16 @@ class WholeBodyController:
         self._h_base[:9, :9] = self.gains.w_qdd * np.eye(9)
         self._h_base[:6, :6] += self.gains.w_task * np.eye(6)  # |R a| = |a|: R is orthogonal
 
-    def _ankle_jacobians(self, data, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    def _ankle_jacobians(self, data, ankle: np.ndarray, r_base: np.ndarray):
         """World-frame ankle Jacobians w.r.t. the free joint (n, 3, 6; MuJoCo's velocity
-        coordinates: world linear, local angular) and w.r.t. each leg's joints (n, 3, 3)."""
-        r_base = data.xmat[self.layout.base_body].reshape(3, 3)
-        arm = data.xpos[self.layout.ankle_body] - data.qpos[:3]  # (n, 3)
+        coordinates: world linear, local angular) and w.r.t. each leg's joints (n, 3, 3),
+        from MuJoCo's joint axes and anchors: column = axis x (ankle - anchor)."""
         jb = self._jb.copy()
-        skew = np.zeros((self.n, 3, 3))
-        skew[:, 0, 1], skew[:, 0, 2], skew[:, 1, 2] = -arm[:, 2], arm[:, 1], -arm[:, 0]
-        skew -= skew.transpose(0, 2, 1)
-        jb[:, :, 3:] = -skew @ r_base
-        jl = (r_base @ self.rot_bl) @ leg_jacobian(self.spec, q)
+        arm = ankle - data.qpos[:3]
+        jb[:, :, 3:] = np.cross(r_base.T[None, :, :], arm[:, None, :]).transpose(0, 2, 1)
+        joints = self.layout.joint
+        lever = ankle[:, None, :] - data.xanchor[joints]
+        jl = np.cross(data.xaxis[joints], lever).transpose(0, 2, 1)
         return jb, jl
 
     def __call__(self, data, t: float, touching: np.ndarray) -> ControlOutput:
@@ -141,10 +140,10 @@ class WholeBodyController:
         qvel = data.qvel
         q = data.qpos[lay.qpos]
         qd = qvel[lay.dof]
-        jb, jl = self._ankle_jacobians(data, q)
         ankle = data.xpos[lay.ankle_body]
-        ankle_vel = jb @ qvel[:6] + (jl @ qd[..., None])[..., 0]
         r_base = data.xmat[lay.base_body].reshape(3, 3)
+        jb, jl = self._ankle_jacobians(data, ankle, r_base)
+        ankle_vel = jb @ qvel[:6] + (jl @ qd[..., None])[..., 0]
         # the stepping leg is tracked while swinging and, pressing on, until it touches down
         swing = tg.step_leg if (tg.step_leg >= 0 and (tg.phase[tg.step_leg] == SWING or (
             tg.phase[tg.step_leg] == TOUCHDOWN and not touching[tg.step_leg]))) else -1
@@ -215,13 +214,12 @@ class WholeBodyController:
             target[swing] = tg.sole_pos + (self.foot - (tg.phase[swing] == TOUCHDOWN) * PRESS) * self.normal
             target_vel[swing] = tg.sole_vel
         rel = (target - tg.base_pos) @ self.r_ref  # base frame (reference pose)
-        rel_vel = (target_vel - tg.base_vel) @ self.r_ref
         in_leg = np.einsum("nji,nj->ni", self.rot_bl, rel - self.org_bl)
-        vel_leg = np.einsum("nji,nj->ni", self.rot_bl, rel_vel)
         q_ref = leg_ik(self.spec, in_leg)
-        jr = leg_jacobian(self.spec, q_ref)  # damped least squares: safe at a stretched leg
-        jtj = np.einsum("nki,nkj->nij", jr, jr) + IK_DAMPING**2 * self._eye3
-        qd_ref = np.linalg.solve(jtj, np.einsum("nki,nk->ni", jr, vel_leg)[..., None])[..., 0]
+        # velocity references by damped least squares (safe at a stretched leg), world frame
+        jlt = jl.transpose(0, 2, 1)
+        rhs = jlt @ (target_vel - tg.base_vel)[..., None]
+        qd_ref = np.linalg.solve(jlt @ jl + IK_DAMPING**2 * self._eye3, rhs)[..., 0]
         command = tau_ff + self.kp * q_ref + self.kd * qd_ref
         tau = np.clip(command - self.kp * q - self.kd * qd, -self.limit, self.limit)
         return ControlOutput(command, tau, tau_ff, tg.magnet, tg, q_ref)

@@ -21,23 +21,6 @@ def leg_fk(spec: RobotSpec, q: np.ndarray) -> np.ndarray:
     return np.stack([reach * np.cos(q0), reach * np.sin(q0), height], axis=-1)
 
 
-def leg_jacobian(spec: RobotSpec, q: np.ndarray) -> np.ndarray:
-    """d ankle / d q, shaped (..., 3, 3), in the leg frame."""
-    lc, lf, lt = (spec.leg.lengths[k] for k in ("coxa", "femur", "tibia"))
-    q0, q1, q2 = q[..., 0], q[..., 1], q[..., 2]
-    reach = lc + lf * np.cos(q1) + lt * np.cos(q1 + q2)
-    d_reach1 = -lf * np.sin(q1) - lt * np.sin(q1 + q2)
-    d_reach2 = -lt * np.sin(q1 + q2)
-    d_h1 = lf * np.cos(q1) + lt * np.cos(q1 + q2)
-    d_h2 = lt * np.cos(q1 + q2)
-    c0, s0 = np.cos(q0), np.sin(q0)
-    jac = np.zeros(q.shape[:-1] + (3, 3))
-    jac[..., 0, 0], jac[..., 1, 0] = -reach * s0, reach * c0
-    jac[..., 0, 1], jac[..., 1, 1], jac[..., 2, 1] = d_reach1 * c0, d_reach1 * s0, d_h1
-    jac[..., 0, 2], jac[..., 1, 2], jac[..., 2, 2] = d_reach2 * c0, d_reach2 * s0, d_h2
-    return jac
-
-
 def leg_ik(spec: RobotSpec, ankle: np.ndarray) -> np.ndarray:
     """Joint angles (..., 3) putting the ankle at `ankle` (..., 3), knee-up branch.
 

@@ -17,6 +17,7 @@ from symbench.core.sim.model import BASE, SURFACE, joint_name, magnet_name, sole
 @dataclass(frozen=True)
 class ModelLayout:
     n_legs: int
+    joint: np.ndarray  # (n, 3) joint ids of coxa, femur, tibia
     qpos: np.ndarray  # (n, 3) qpos addresses of coxa, femur, tibia
     dof: np.ndarray  # (n, 3) dof addresses
     motor: np.ndarray  # (n, 3) actuator ids of the joint motors
@@ -45,6 +46,7 @@ class ModelLayout:
         base_dof = model.jnt_dofadr[model.body_jntadr[base]]
         return cls(
             n_legs=n,
+            joint=joints,
             qpos=model.jnt_qposadr[joints],
             dof=dof,
             motor=np.array([[aid(joint_name(i, j)) for j in JOINT_NAMES] for i in range(n)]),

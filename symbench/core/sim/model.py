@@ -31,6 +31,7 @@ SURFACE_BITS, ROBOT_BITS = (1, 2), (2, 1)
 SOLE_SOLREF = (0.002, 1.0)
 SOLE_SOLIMP = (0.95, 0.99, 0.001, 0.5, 2.0)
 SOLE_MARGIN = 0.002  # m
+SOLE_HALF_THICKNESS = 0.004  # m
 
 
 def joint_name(leg: int, joint: str) -> str:
@@ -128,11 +129,13 @@ def _add_leg(spec_mj, base, spec: RobotSpec, i: int) -> None:
         parent, pos = body, (0.0, 0.0, 0.0)
     r = leg.sole_radius
     reach = ankle_to_sole(spec)
-    parent.add_geom(name=sole_name(i), type=mujoco.mjtGeom.mjGEOM_SPHERE, size=[r, 0, 0],
-                    pos=[reach - r, 0, 0], contype=ROBOT_BITS[0], conaffinity=ROBOT_BITS[1],
-                    friction=[spec.magnet.friction, 0.0, 0.0], condim=3,
+    # a flat magnet pad: a cylinder whose axis is the foot axis (the foot body's x)
+    parent.add_geom(name=sole_name(i), type=mujoco.mjtGeom.mjGEOM_CYLINDER,
+                    size=[r, SOLE_HALF_THICKNESS, 0], pos=[reach - SOLE_HALF_THICKNESS, 0, 0],
+                    quat=[np.sqrt(0.5), 0.0, np.sqrt(0.5), 0.0], contype=ROBOT_BITS[0],
+                    conaffinity=ROBOT_BITS[1], friction=[spec.magnet.friction, 0.0, 0.0], condim=3,
                     solref=list(SOLE_SOLREF), solimp=list(SOLE_SOLIMP), margin=SOLE_MARGIN)
-    _visual_capsule(parent, reach - r, 0.02)
+    _visual_capsule(parent, reach - 2 * SOLE_HALF_THICKNESS, 0.02)
     for joint in JOINT_NAMES:
         _add_joint_servo(spec_mj, joint_name(i, joint), spec)
     magnet = spec_mj.add_actuator(name=magnet_name(i), target=foot_name(i),
