@@ -7,9 +7,9 @@ export MUJOCO_GL ?= disable
 
 .PHONY: run test test-slow bench clean
 
-$(STAMP): pyproject.toml constraints.txt
+$(STAMP): pyproject.toml constraints.txt examples/symbench-example-plugin/pyproject.toml
 	test -x $(VENV)/bin/python || $(PYTHON) -m venv $(VENV)
-	$(VENV)/bin/python -m pip install --quiet -c constraints.txt -e '.[test]'
+	$(VENV)/bin/python -m pip install --quiet -c constraints.txt -e '.[test]' -e examples/symbench-example-plugin
 	touch $(STAMP)
 
 run: $(STAMP)

@@ -9,6 +9,7 @@ import click
 # subcommand -> "module:attribute" of a click command
 BENCH_COMMANDS: dict[str, str] = {
     "sim": "symbench.core.sim.bench:bench_sim",
+    "models": "symbench.core.bench_models:bench_models",
 }
 
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import contextlib
 from collections.abc import Callable
+from functools import partial
 from typing import Any
 
 import flax.linen as nn
@@ -160,13 +161,13 @@ class JaxBackend:
             y = net.apply({"params": p}, **inputs)
             return y * stats[TARGET_KEY][1] + stats[TARGET_KEY][0]
 
-        run = jax.jit(forward) if compiled else forward
+        # jit closes over parameters and statistics: constants cost nothing per call
+        run = jax.jit(partial(forward, tree, stats)) if compiled else partial(forward, tree, stats)
 
         def predict(inputs: dict[str, np.ndarray]) -> np.ndarray:
             with _x64(dtype):
-                xs = [jnp.asarray(np.asarray(inputs[k], dtype)) for k in keys]
-                y = run(tree, stats, *xs)
-            check_output(entry, dims, y.shape, len(xs[0]))
+                y = run(*(np.asarray(inputs[k], dtype) for k in keys))
+            check_output(entry, dims, y.shape, len(inputs[keys[0]]))
             return np.asarray(y, dtype=np.float64)
 
         return predict
