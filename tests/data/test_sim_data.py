@@ -68,6 +68,18 @@ def test_a_scene_simulated_at_another_heading_gives_the_same_leg_grouped_data(ro
     assert np.abs(vec_a.inputs["x"] - vec_b.inputs["x"]).max() > 1e-2  # the world frame moved
 
 
+def _reach(m, d, geom: int, normal: np.ndarray) -> float:
+    """How far a sphere or cylinder sole reaches from its centre towards the surface."""
+    import mujoco
+
+    size = m.geom_size[geom]
+    if m.geom_type[geom] == mujoco.mjtGeom.mjGEOM_SPHERE:
+        return float(size[0])
+    assert m.geom_type[geom] == mujoco.mjtGeom.mjGEOM_CYLINDER, "a sole shape this test lacks"
+    along = abs(d.geom_xmat[geom].reshape(3, 3)[:, 2] @ normal)  # cylinder axis vs normal
+    return float(size[1] * along + size[0] * np.sqrt(max(0.0, 1.0 - along**2)))
+
+
 @pytest.mark.parametrize("robot, inclination", [("magneto", 0.0), ("hexa", 0.0), ("hexa", 90.0)])
 def test_recorded_contact_and_magnet_flags_match_the_physics(robot, inclination):
     """Recomputed from MuJoCo's state by name and geometry, not through the recorder."""
@@ -86,7 +98,7 @@ def test_recorded_contact_and_magnet_flags_match_the_physics(robot, inclination)
         surface = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_GEOM, SURFACE)
         normal, origin = d.geom_xmat[surface].reshape(3, 3)[:, 2], d.geom_xpos[surface]
         soles = [mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_GEOM, sole_name(i)) for i in range(spec.n_legs)]
-        gap = (d.geom_xpos[soles] - origin) @ normal - m.geom_size[soles, 0]
+        gap = (d.geom_xpos[soles] - origin) @ normal - [_reach(m, d, g, normal) for g in soles]
         magnets = [mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_ACTUATOR, magnet_name(i))
                    for i in range(spec.n_legs)]
         base = d.xmat[mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_BODY, "base")].reshape(3, 3)
