@@ -129,3 +129,37 @@ def test_sim_check_and_bench_commands():
     assert bench["ratio"] == pytest.approx(bench["controlled_steps_per_s"] / bench["raw_mj_step_per_s"])
     result = runner.invoke(cli, ["sim", "check", "--robot", "hexx"])
     assert result.exit_code != 0 and "hexa" in result.output
+
+
+def test_a_plugin_robot_that_falls_makes_sim_check_fail(tmp_path):
+    """A robot added by a plugin (a spec folder) is simulated like the built-ins; with
+    magnets too weak for a wall it detaches, and `sim check` exits non-zero."""
+    import tomllib
+
+    from symbench.core.entries import RobotEntry
+    from symbench.core.hookspecs import hookimpl
+    from symbench.core.plugins import PluginHost, set_host
+    from symbench.plugins.robots import ROBOTS_DIR
+
+    text = (ROBOTS_DIR / "hexa" / "robot.toml").read_text()
+    text = text.replace('name = "hexa"', 'name = "weakling"').replace("force = 147.0", "force = 3.0")
+    assert tomllib.loads(text)["magnet"]["force"] == 3.0
+    (tmp_path / "weakling").mkdir()
+    (tmp_path / "weakling" / "robot.toml").write_text(text)
+
+    class Plugin:
+        @hookimpl
+        def symbench_robots(self):
+            return [RobotEntry("weakling", tmp_path / "weakling", "hexa with weak magnets")]
+
+    host = PluginHost()
+    host.load_entry_points("none")
+    host.register(Plugin(), "weak-robots")
+    set_host(host)
+    try:
+        result = CliRunner().invoke(build_cli(), ["sim", "check", "--robot", "weakling",
+                                                  "--inclination", "90", "--seconds", "1"])
+    finally:
+        set_host(None)
+    assert result.exit_code == 1, result.output
+    assert "DETACHED" in result.output

@@ -103,6 +103,7 @@ class WholeBodyController:
         cols = 9 + 3 * np.arange(n)[:, None, None] + np.arange(3)[None, None, :]
         self._C[rows, cols] = self.cone
         self._legs = np.arange(n)
+        self._liftoff: tuple[int, np.ndarray | None] = (-1, None)  # (slot, sole at release)
         self._eye3, self._eye6, self._eye9 = np.eye(3), np.eye(6), np.eye(9)
         self._tau_max = np.tile(self.limit * self.gains.torque_margin, n)
         self._jb = np.zeros((n, 3, 6))
@@ -133,7 +134,8 @@ class WholeBodyController:
         import mujoco
 
         g, n, nr, lay = self.gains, self.n, self.nr, self.layout
-        tg = self.plan.targets(t)
+        slot = self.plan.slot_index(t)
+        tg = self.plan.targets(t, self._liftoff[1] if self._liftoff[0] == slot else None)
         mujoco.mj_fullM(self.model, data, self._m_full)
         m_r = self._m_full[self._red]
         h_r = data.qfrc_bias[lay.reduced]
@@ -142,6 +144,8 @@ class WholeBodyController:
         qd = qvel[lay.dof]
         ankle = data.xpos[lay.ankle_body]
         r_base = data.xmat[lay.base_body].reshape(3, 3)
+        if tg.step_leg >= 0 and tg.phase[tg.step_leg] == RELEASE:  # where the foot stands
+            self._liftoff = (slot, ankle[tg.step_leg] - self.foot * self.normal)
         jb, jl = self._ankle_jacobians(data, ankle, r_base)
         ankle_vel = jb @ qvel[:6] + (jl @ qd[..., None])[..., 0]
         # the stepping leg is tracked while swinging and, pressing on, until it touches down

@@ -66,6 +66,7 @@ class GaitTargets:
     base_pos: np.ndarray  # (3,) world
     base_vel: np.ndarray
     base_acc: np.ndarray
+    slot: int  # the step slot; -1 while settling
     step_leg: int  # the leg in its step slot (release, swing, touchdown); -1 while settling
     sole_pos: np.ndarray  # (3,) its sole target (world): start, spline, goal; zeros if none
     sole_vel: np.ndarray
@@ -94,9 +95,16 @@ class GaitPlan:
     def slot(self) -> float:
         return self.spec.gait.step_duration
 
-    def targets(self, t: float) -> GaitTargets:
+    def slot_index(self, t: float) -> int:
+        """The step slot at time t; -1 while settling."""
+        return math.floor((t - SETTLE) / self.slot) if t >= SETTLE else -1
+
+    def targets(self, t: float, liftoff: np.ndarray | None = None) -> GaitTargets:
+        """Targets at time t. `liftoff`, where the stepping foot really stood when it was
+        released, starts its swing there (the goal stays on the plan), so that landing
+        errors and creep never add up from step to step."""
         g, n = self.spec.gait, self.spec.n_legs
-        s = math.floor((t - SETTLE) / self.slot) if t >= SETTLE else -1  # slot index
+        s = self.slot_index(t)
         tau = t - SETTLE - s * self.slot if s >= 0 else 0.0  # time into the slot
         phase = np.full(n, STANCE)
         magnet = np.ones(n)
@@ -115,11 +123,12 @@ class GaitPlan:
                 phase[leg], magnet[leg], pos = RELEASE, 0.0, start
             elif tau < g.release + g.swing:
                 phase[leg], magnet[leg] = SWING, 0.0
-                pos, vel, acc = self._swing(start, goal, (tau - g.release) / g.swing)
+                origin = start if liftoff is None else liftoff
+                pos, vel, acc = self._swing(origin, goal, (tau - g.release) / g.swing)
             else:
                 phase[leg], pos = TOUCHDOWN, goal
                 magnet[leg] = min_jerk((tau - g.release - g.swing) / MAGNET_RAMP)[0]
-        return GaitTargets(phase, magnet, base_pos, base_vel, base_acc, leg, pos, vel, acc)
+        return GaitTargets(phase, magnet, base_pos, base_vel, base_acc, s, leg, pos, vel, acc)
 
     def _swing(self, start: np.ndarray, goal: np.ndarray, u: float):
         """Two Hermite segments through the raised mid point, at swing fraction u."""
