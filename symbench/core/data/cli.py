@@ -19,6 +19,13 @@ def data() -> None:
     """Generate, inspect, import and export datasets (cached under $SYMBENCH_HOME)."""
 
 
+def _print_failures(failures: list[dict], shown: int = 10) -> None:
+    for failure in failures[:shown]:
+        console.print(f"  [yellow]failed[/] #{failure['id']}: {failure['failure']}")
+    if len(failures) > shown:
+        console.print(f"  ... and {len(failures) - shown} more (see --json)")
+
+
 @data.command("generate")
 @click.option("--robot", required=True, help="Registered robot, e.g. hexa.")
 @click.option("--preset", "preset_name", default="small", show_default=True,
@@ -36,8 +43,7 @@ def generate_command(robot: str, preset_name: str, workers: int, progress: bool)
     console.print(f"  {report.n_trajectories} trajectories, {report.n_samples} samples; "
                   f"{report.n_failed} failed (robot detached, left out); "
                   f"{report.n_simulated} simulated in {report.seconds:.1f} s, {kept} kept")
-    for failure in report.failures[:10]:
-        console.print(f"  [yellow]failed[/] #{failure['id']}: {failure['failure']}")
+    _print_failures(report.failures)
     console.print(f"  content hash {report.content_hash}")
 
 
@@ -58,6 +64,7 @@ def info_command(dataset_id: str, seed: int, as_json: bool) -> None:
                   f"{info['trajectories']} trajectories, {info['samples']} samples, "
                   f"{info['failed']} failed, {info['size_bytes'] / 1e6:.2f} MB")
     console.print(f"content hash {info['content_hash']}")
+    _print_failures(info["failures"])
     table = Table(title=f"splits (seed {seed}): trajectories / samples")
     for column in ("split", "train", "val", "test", "disjoint"):
         table.add_column(column)

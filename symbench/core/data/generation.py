@@ -15,13 +15,15 @@ import multiprocessing
 import time
 from collections.abc import Callable, Sequence
 from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
+from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from symbench.core.data.columns import check_flags
+from symbench.core.data.dataset import Dataset, load_dataset
 from symbench.core.data.determinism import pin_portable_qp_build, portable_qp_in_process
-from symbench.core.data.metadata import dataset_dir, library_versions, write_metadata
+from symbench.core.data.metadata import METADATA, dataset_dir, library_versions, write_metadata
 from symbench.core.data.presets import RECORD_PERIOD, dataset_id, preset, rotation_order
 from symbench.core.data.storage import atomic_write_json, read_json, sha256_file, write_trajectory
 from symbench.core.errors import SymbenchError
@@ -137,6 +139,8 @@ def generate(robot: str, preset_name: str = "small", workers: int = 1,
     """Generate (or resume) the dataset of `preset_name` for `robot` in the cache.
 
     `scenarios` and `id_override` replace the preset's grid and id (tests use tiny grids).
+    Workers are spawned processes: a script calling this with workers > 1 needs the usual
+    `if __name__ == "__main__":` guard.
     """
     from symbench.core.robots import load_robot
 
@@ -159,7 +163,8 @@ def generate(robot: str, preset_name: str = "small", workers: int = 1,
     todo = [t for t in tasks if t.index not in records]
 
     start = time.perf_counter()
-    with ProgressBar(show_progress, len(tasks), len(records), did) as advance:
+    failed_before = sum(r["status"] != "ok" for r in records.values())
+    with ProgressBar(show_progress, len(tasks), len(records), failed_before, did) as advance:
         def on_done(rec: dict[str, Any]) -> None:
             records[rec["id"]] = rec
             advance(rec)
@@ -169,32 +174,44 @@ def generate(robot: str, preset_name: str = "small", workers: int = 1,
         except KeyboardInterrupt:
             raise SymbenchError(f"interrupted with {len(records)} of {len(tasks)} trajectories "
                                 "done; run the same command again to resume") from None
+        except BrokenProcessPool as exc:
+            raise SymbenchError(f"a worker process died ({exc}) with {len(records)} of "
+                                f"{len(tasks)} trajectories done; run again to resume (a script "
+                                "that calls generate() with workers > 1 needs an "
+                                "`if __name__ == '__main__':` guard)") from None
     seconds = time.perf_counter() - start
+    grid_doc = grid.grid(order) if id_override is None else {"scenarios": len(tasks)}
+    meta = _write_dataset(root, did, robot, preset_name, spec.n_legs, key, grid_doc,
+                          [records[i] for i in range(len(tasks))])
+    return GenerationReport(did, root, len(meta["trajectories"]), len(meta["failures"]),
+                            meta["n_samples"], len(todo), seconds, meta["content_hash"],
+                            meta["failures"])
 
-    ordered = [records[i] for i in range(len(tasks))]
+
+def _write_dataset(root: Path, did: str, robot: str, preset_name: str, n_legs: int,
+                   key: dict[str, Any], grid_doc: dict[str, Any],
+                   records: list[dict[str, Any]]) -> dict[str, Any]:
+    """metadata.json from the records in grid order: kept trajectories, then failures."""
     ok = [{k: r[k] for k in ("id", "file", "sha256", "n_steps", "scenario")}
-          for r in ordered if r["status"] == "ok"]
+          for r in records if r["status"] == "ok"]
     failures = [{k: r[k] for k in ("id", "scenario", "failure")}
-                for r in ordered if r["status"] != "ok"]
-    repair = f"symbench data generate --robot {robot} --preset {preset_name}"
-    meta = write_metadata(root, {
-        "id": did, "source": "generated", "robot": robot, "n_legs": spec.n_legs,
+                for r in records if r["status"] != "ok"]
+    return write_metadata(root, {
+        "id": did, "source": "generated", "robot": robot, "n_legs": n_legs,
         "robot_spec_hash": key["robot_spec_hash"], "raw_schema_version": SCHEMA_VERSION,
         "record_period_s": RECORD_PERIOD, "versions": key["versions"], "preset": preset_name,
-        "scenario_grid": grid.grid(order) if id_override is None else {"scenarios": len(tasks)},
-        "trajectories": ok, "failures": failures,
-        "n_samples": sum(r["n_steps"] - 1 for r in ok), "repair_command": repair,
+        "scenario_grid": grid_doc, "trajectories": ok, "failures": failures,
+        "n_samples": sum(r["n_steps"] - 1 for r in ok),
+        "repair_command": f"symbench data generate --robot {robot} --preset {preset_name}",
     })
-    return GenerationReport(did, root, len(ok), len(failures), meta["n_samples"], len(todo),
-                            seconds, meta["content_hash"], failures)
 
 
 class ProgressBar:
     """A rich progress bar over trajectories (or nothing), counting failures as they come."""
 
-    def __init__(self, show: bool, total: int, done: int, label: str):
+    def __init__(self, show: bool, total: int, done: int, failed: int, label: str):
         self.show, self.total, self.done, self.label = show, total, done, label
-        self.failed = 0
+        self.failed = failed
 
     def __enter__(self) -> Callable[[dict], None]:
         if not self.show:
@@ -210,7 +227,7 @@ class ProgressBar:
 
     def advance(self, rec: dict) -> None:
         self.failed += rec["status"] != "ok"
-        suffix = f" ({self.failed} detached)" if self.failed else ""
+        suffix = f" ({self.failed} failed)" if self.failed else ""
         self.bar.update(self.task, advance=1, description=self.label + suffix)
 
     def __exit__(self, *exc: object) -> None:
@@ -219,11 +236,8 @@ class ProgressBar:
 
 
 def ensure_dataset(robot: str, preset_name: str = "small", workers: int = 2,
-                   show_progress: bool = True):
+                   show_progress: bool = True) -> Dataset:
     """The preset's dataset, generated first when it is not in the cache (`symbench run`)."""
-    from symbench.core.data.dataset import load_dataset
-    from symbench.core.data.metadata import METADATA
-
     did = dataset_id(robot, preset_name)
     if not (dataset_dir(did) / METADATA).is_file():
         generate(robot, preset_name, workers, show_progress=show_progress)
