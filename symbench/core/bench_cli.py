@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-import importlib
-
 import click
+
+from symbench.core.lazy_group import LazyGroup
 
 # subcommand -> "module:attribute" of a click command
 BENCH_COMMANDS: dict[str, str] = {
@@ -13,17 +13,6 @@ BENCH_COMMANDS: dict[str, str] = {
 }
 
 
-class LazyBenchGroup(click.Group):
-    def list_commands(self, ctx: click.Context) -> list[str]:
-        return sorted(set(super().list_commands(ctx)) | set(BENCH_COMMANDS))
-
-    def get_command(self, ctx: click.Context, name: str) -> click.Command | None:
-        if name in BENCH_COMMANDS and name not in self.commands:
-            module, attr = BENCH_COMMANDS[name].split(":")
-            self.add_command(getattr(importlib.import_module(module), attr), name)
-        return super().get_command(ctx, name)
-
-
-@click.group("bench", cls=LazyBenchGroup)
+@click.group("bench", cls=LazyGroup, lazy_commands=BENCH_COMMANDS)
 def bench() -> None:
     """Speed figures measured side by side in one run (JSON with --json)."""

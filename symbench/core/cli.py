@@ -7,7 +7,6 @@ Core commands live next to the code they drive and are imported only when invoke
 
 from __future__ import annotations
 
-import importlib
 import json
 import sys
 
@@ -18,6 +17,7 @@ from rich.table import Table
 from symbench import __version__
 from symbench.core.entries import describe
 from symbench.core.errors import SymbenchError, UnknownNameError
+from symbench.core.lazy_group import LazyGroup
 from symbench.core.paths import dataset_ids
 from symbench.core.plugins import get_host
 from symbench.core.registry import KINDS, collect
@@ -36,17 +36,8 @@ LAZY_COMMANDS: dict[str, str] = {
 stderr = Console(stderr=True)
 
 
-class SymbenchGroup(click.Group):
-    """A click group with lazily imported core commands and clear errors."""
-
-    def list_commands(self, ctx: click.Context) -> list[str]:
-        return sorted(set(super().list_commands(ctx)) | set(LAZY_COMMANDS))
-
-    def get_command(self, ctx: click.Context, name: str) -> click.Command | None:
-        if name in LAZY_COMMANDS and name not in self.commands:
-            module, attr = LAZY_COMMANDS[name].split(":")
-            self.add_command(getattr(importlib.import_module(module), attr), name)
-        return super().get_command(ctx, name)
+class SymbenchGroup(LazyGroup):
+    """The top-level group: lazily imported core commands, clear errors for unknown names."""
 
     def resolve_command(self, ctx: click.Context, args: list[str]):
         name = args[0] if args else ""
@@ -61,7 +52,8 @@ class SymbenchGroup(click.Group):
             raise click.ClickException(str(exc)) from exc
 
 
-@click.group(cls=SymbenchGroup, context_settings={"help_option_names": ["-h", "--help"]})
+@click.group(cls=SymbenchGroup, lazy_commands=LAZY_COMMANDS,
+             context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, prog_name="symbench")
 def cli() -> None:
     """Benchmark learned dynamics of symmetric legged robots."""
@@ -112,7 +104,7 @@ def plugins_command() -> None:
 def build_cli() -> click.Group:
     """A fresh command group: the core commands plus those that plugins add."""
     group = SymbenchGroup(name=cli.name, commands=dict(cli.commands), callback=cli.callback,
-                          params=cli.params, help=cli.help,
+                          params=cli.params, help=cli.help, lazy_commands=LAZY_COMMANDS,
                           context_settings=cli.context_settings)
     get_host().call("symbench_commands", cli=group)
     return group
