@@ -135,3 +135,16 @@ def test_ensure_dataset_generates_only_when_missing(home, monkeypatch):
     assert len(calls) == 4 and ds.id == "hexa-climb-smoke-v1"
     assert generation.ensure_dataset("hexa", "smoke", workers=1).content_hash == ds.content_hash
     assert len(calls) == 4
+
+
+def test_a_changed_robot_spec_is_noticed_and_ensure_dataset_rebuilds(smoke_hexa, monkeypatch):
+    from symbench.core.data import generation
+    from symbench.core.robots import RobotSpec
+
+    monkeypatch.setattr(RobotSpec, "spec_hash", lambda self: "an edited robot.toml")
+    with pytest.raises(SymbenchError, match="robot.toml changed.*--robot hexa --preset smoke"):
+        load_dataset(smoke_hexa.dataset_id).view("leg_grouped", "acc")
+    monkeypatch.setattr(generation, "default_simulator", lambda: fake_simulate)
+    rebuilt = generation.ensure_dataset("hexa", "smoke", workers=1, show_progress=False)
+    assert rebuilt.metadata["robot_spec_hash"] == "an edited robot.toml"
+    assert rebuilt.view("leg_grouped", "acc").n_legs == 6

@@ -23,7 +23,7 @@ def _print_failures(failures: list[dict], shown: int = 10) -> None:
     for failure in failures[:shown]:
         console.print(f"  [yellow]failed[/] #{failure['id']}: {failure['failure']}")
     if len(failures) > shown:
-        console.print(f"  ... and {len(failures) - shown} more (see --json)")
+        console.print(f"  ... and {len(failures) - shown} more (`symbench data info ID --json` lists all)")
 
 
 @data.command("generate")

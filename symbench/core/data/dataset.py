@@ -63,9 +63,10 @@ class Dataset:
         from symbench.core.robots import load_robot
 
         spec = load_robot(self.robot)
-        if spec.n_legs != self.n_legs:
-            raise SymbenchError(f"dataset '{self.id}' has {self.n_legs} legs, robot "
-                                f"'{self.robot}' now has {spec.n_legs}; {self.metadata['repair_command']}")
+        if spec.spec_hash() != self.metadata["robot_spec_hash"]:
+            raise SymbenchError(f"dataset '{self.id}' was made with another version of robot "
+                                f"'{self.robot}' (its robot.toml changed since); rebuild it with: "
+                                f"{self.metadata['repair_command']}")
         return spec
 
     @property

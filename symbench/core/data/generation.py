@@ -28,6 +28,7 @@ from symbench.core.data.presets import RECORD_PERIOD, dataset_id, preset, rotati
 from symbench.core.data.storage import atomic_write_json, read_json, sha256_file, write_trajectory
 from symbench.core.errors import SymbenchError
 from symbench.core.raw import SCHEMA_VERSION, validate_raw
+from symbench.core.robots import load_robot
 from symbench.core.scenario import Scenario
 
 Simulator = Callable[..., Any]  # (scenario, record_period=...) -> Rollout
@@ -142,8 +143,6 @@ def generate(robot: str, preset_name: str = "small", workers: int = 1,
     Workers are spawned processes: a script calling this with workers > 1 needs the usual
     `if __name__ == "__main__":` guard.
     """
-    from symbench.core.robots import load_robot
-
     spec = load_robot(robot)
     grid = preset(preset_name)
     did = id_override or dataset_id(robot, preset_name)
@@ -237,8 +236,11 @@ class ProgressBar:
 
 def ensure_dataset(robot: str, preset_name: str = "small", workers: int = 2,
                    show_progress: bool = True) -> Dataset:
-    """The preset's dataset, generated first when it is not in the cache (`symbench run`)."""
+    """The preset's dataset, generated first when it is missing or its robot spec changed."""
     did = dataset_id(robot, preset_name)
-    if not (dataset_dir(did) / METADATA).is_file():
-        generate(robot, preset_name, workers, show_progress=show_progress)
+    if (dataset_dir(did) / METADATA).is_file():
+        dataset = load_dataset(did)
+        if dataset.metadata["robot_spec_hash"] == load_robot(robot).spec_hash():
+            return dataset
+    generate(robot, preset_name, workers, show_progress=show_progress)
     return load_dataset(did)
