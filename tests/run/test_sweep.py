@@ -1,0 +1,49 @@
+"""An interrupted sweep resumes without redoing finished runs."""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+from symbench.core.results import read_record
+from symbench.core.runner import RunSpec
+from symbench.core.sweep import plan, sweep
+
+SYMBENCH = str(Path(sys.executable).parent / "symbench")
+MODELS = ("sdnn", "ffnn", "ffnn-leg")
+
+
+def test_interrupted_sweep_resumes_without_redoing_work(smoke_home, tmp_path):
+    out = tmp_path / "results"
+    command = [SYMBENCH, "sweep", "--models", ",".join(MODELS), "--robots", "hexa",
+               "--seeds", "0", "--preset", "smoke", "--evaluators", "torque-error",
+               "--output", str(out)]
+    proc = subprocess.Popen(command, env={**os.environ, "SYMBENCH_HOME": str(smoke_home)},
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                            start_new_session=True)
+    deadline = time.monotonic() + 240
+    while not list(out.glob("*.json")):
+        assert proc.poll() is None, proc.stdout.read().decode()
+        assert time.monotonic() < deadline, "the sweep wrote no record in time"
+        time.sleep(0.05)
+    os.killpg(proc.pid, signal.SIGKILL)  # interrupted mid-sweep, as by a power cut
+    proc.wait()
+    first = sorted(out.glob("*.json"))
+    assert 1 <= len(first) < len(MODELS)
+    before = {p: (p.stat().st_mtime_ns, p.read_bytes()) for p in first}
+
+    base = RunSpec(model="", robot="", preset="smoke", evaluators=("torque-error",),
+                   output=out, progress=False)
+    specs = plan(MODELS, ["hexa"], ["iid"], [0], ["torch"], base)
+    messages: list[str] = []
+    ran = sweep(specs, report=messages.append)
+    assert messages[0].startswith(f"{len(first)} of {len(MODELS)} runs already have records")
+    assert sorted(ran) == sorted(s.key() for s in specs if s.record_path not in before)
+    for path, (mtime, content) in before.items():  # finished runs were not redone
+        assert (path.stat().st_mtime_ns, path.read_bytes()) == (mtime, content)
+    assert all(read_record(s.record_path).model.name == s.model for s in specs)
+    assert sweep(specs, report=messages.append) == []  # a finished sweep does nothing
