@@ -28,6 +28,7 @@ LAZY_COMMANDS: dict[str, str] = {
     "bench": "symbench.core.bench_cli:bench",
     "sim": "symbench.core.sim.cli:sim",
     "leaderboard": "symbench.core.leaderboard_cli:leaderboard",
+    "publish": "symbench.core.leaderboard_cli:publish",
     "sweep": "symbench.core.sweep_cli:sweep",
     "data": "symbench.core.data.cli:data",
     "check-equivariance": "symbench.testing.check_command:check_equivariance",

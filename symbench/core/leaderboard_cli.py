@@ -18,3 +18,15 @@ def leaderboard(results: Path, out: Path) -> None:
 
     for path in write_leaderboard(results, out):
         click.echo(f"wrote {path}")
+
+
+@click.command("publish")
+@click.argument("records", nargs=-1, required=True, type=click.Path(path_type=Path, exists=True))
+@click.option("--to", "board", type=click.Path(path_type=Path), default=Path("leaderboards"),
+              show_default=True, help="The leaderboards folder to merge into.")
+def publish(records: tuple[Path, ...], board: Path) -> None:
+    """Validate RECORDS (schema, standard dataset hash, enough seeds) and merge them."""
+    from symbench.core.publish import publish as merge
+
+    for path in merge(list(records), board):
+        click.echo(f"wrote {path}")

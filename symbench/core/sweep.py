@@ -8,6 +8,7 @@ once per robot before the runs start, so parallel runs never race to generate th
 from __future__ import annotations
 
 import itertools
+import os
 from collections.abc import Callable, Sequence
 from dataclasses import replace
 
@@ -76,7 +77,10 @@ def _sweep_ray(todo: list[RunSpec], address: str | None, report: Callable[[str],
     except ImportError:
         raise SymbenchError("--executor ray needs Ray: pip install -c constraints.txt "
                             "'symbench[ray]'") from None
-    ray.init(address=address, ignore_reinit_error=True, log_to_driver=False)
+    # workers see the same cache and headless rendering as this process
+    env = {k: os.environ[k] for k in ("SYMBENCH_HOME", "MUJOCO_GL") if k in os.environ}
+    ray.init(address=address, ignore_reinit_error=True, log_to_driver=False,
+             include_dashboard=False, runtime_env={"env_vars": env})
     remote = ray.remote(num_cpus=1)(_run_quietly)
     pending = {remote.remote(s): s for s in todo}
     done = []

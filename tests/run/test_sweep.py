@@ -47,3 +47,17 @@ def test_interrupted_sweep_resumes_without_redoing_work(smoke_home, tmp_path):
         assert (path.stat().st_mtime_ns, path.read_bytes()) == (mtime, content)
     assert all(read_record(s.record_path).model.name == s.model for s in specs)
     assert sweep(specs, report=messages.append) == []  # a finished sweep does nothing
+
+
+def test_sweep_on_a_local_ray_cluster(smoke_home, tmp_path):
+    import ray
+
+    base = RunSpec(model="", robot="", preset="smoke", evaluators=("torque-error",),
+                   output=tmp_path, progress=False)
+    specs = plan(("sdnn", "ffnn"), ["hexa"], ["iid"], [0], ["torch"], base)
+    try:
+        ran = sweep(specs, executor="ray", report=lambda message: None)
+    finally:
+        ray.shutdown()
+    assert sorted(ran) == sorted(s.key() for s in specs)
+    assert [read_record(s.record_path).model.name for s in specs] == ["sdnn", "ffnn"]

@@ -1,4 +1,4 @@
-"""Builders shared by the core tests."""
+"""Builders shared by all tests."""
 
 from __future__ import annotations
 
