@@ -31,6 +31,9 @@ from symbench.core.sim.model import ankle_to_sole
 from symbench.core.sim.qp import INF, DenseQP, InfeasibleQP
 
 
+LEVI_CIVITA = np.zeros((3, 3, 3))  # cross products as one einsum: (a x b)_i = e_ijk a_j b_k
+LEVI_CIVITA[0, 1, 2] = LEVI_CIVITA[1, 2, 0] = LEVI_CIVITA[2, 0, 1] = 1.0
+LEVI_CIVITA[0, 2, 1] = LEVI_CIVITA[2, 1, 0] = LEVI_CIVITA[1, 0, 2] = -1.0
 IK_DAMPING = 1e-3  # m, damping of the velocity-level leg IK
 PRESS = 0.01  # m: a foot still in the air at touchdown is driven this far into the surface
 
@@ -123,10 +126,10 @@ class WholeBodyController:
         from MuJoCo's joint axes and anchors: column = axis x (ankle - anchor)."""
         jb = self._jb.copy()
         arm = ankle - data.qpos[:3]
-        jb[:, :, 3:] = np.cross(r_base.T[None, :, :], arm[:, None, :]).transpose(0, 2, 1)
+        jb[:, :, 3:] = np.einsum("ijk,jm,nk->nim", LEVI_CIVITA, r_base, arm)  # R e_m x arm
         joints = self.layout.joint
         lever = ankle[:, None, :] - data.xanchor[joints]
-        jl = np.cross(data.xaxis[joints], lever).transpose(0, 2, 1)
+        jl = np.einsum("ijk,nmj,nmk->nim", LEVI_CIVITA, data.xaxis[joints], lever)
         return jb, jl
 
     def __call__(self, data, t: float, touching: np.ndarray) -> ControlOutput:
