@@ -69,10 +69,12 @@ BAD = {
     "leg count": (dict(n_legs=4), "4 legs, robot 'hexa' has 6"),
     "rate": (dict(period=0.001), "record_period_s = 0.001"),
     "flag": (dict(edit=lambda c: c["contact.leg0"].__setitem__(3, 2)), "contact.*only 0 and 1"),
-    "npz length": (dict(fmt="npz", edit=lambda r: r.update(qd=r["qd"][:-1])), "'qd' has 19 steps, 't' has 20"),
+    "npz length": (dict(fmt="npz", edit=lambda r: r.update(qd=r["qd"][:-1])), "'qd' has 19 steps.*'t' has 20 steps"),
     "npz legs": (dict(fmt="npz", n_legs=9), "'q' has 9 legs, robot 'hexa' has 6"),
     "npz nan": (dict(fmt="npz", edit=lambda r: r["q"].__setitem__((2, 1, 0), np.inf)), "'q' has NaN or inf"),
     "too short": (dict(n_steps=1), "at least 2"),
+    "text": (dict(edit=lambda c: c.__setitem__("qdd.leg1.tibia", np.array(["x"] * 20))), "'qdd' is not numeric"),
+    "npz scalar": (dict(fmt="npz", edit=lambda r: r.update(tau=np.float64(1.0))), "'tau' has no time axis"),
 }
 
 

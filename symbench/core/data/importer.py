@@ -55,15 +55,31 @@ def _read_file(path: Path, n_legs: int, robot: str) -> dict[str, np.ndarray]:
     q = arrays["q"]
     if q.ndim == 3 and q.shape[1] != n_legs:
         raise SymbenchError(f"{path}: 'q' has {q.shape[1]} legs, robot '{robot}' has {n_legs}")
-    n = len(arrays["t"])
+    def steps(a: np.ndarray) -> str:
+        return f"{np.shape(a)[0]} steps" if np.ndim(a) else "no time axis"
+
     for name in COLUMN_NAMES:
-        if len(arrays[name]) != n:
-            raise SymbenchError(f"{path}: column '{name}' has {len(arrays[name])} steps, 't' has {n}")
+        if np.shape(arrays[name])[:1] != np.shape(arrays["t"])[:1]:
+            raise SymbenchError(f"{path}: column '{name}' has {steps(arrays[name])} (shape "
+                                f"{np.shape(arrays[name])}), 't' has {steps(arrays['t'])}")
     return arrays
+
+
+def _numeric(arrays: dict[str, np.ndarray], source: str) -> dict[str, np.ndarray]:
+    """Every raw column as float64; a column of text or objects is named."""
+    out = {}
+    for name in COLUMN_NAMES:
+        try:
+            out[name] = np.asarray(arrays[name], dtype=np.float64)
+        except (TypeError, ValueError):
+            raise SymbenchError(f"{source}: column '{name}' is not numeric "
+                                f"({np.asarray(arrays[name]).dtype})") from None
+    return out
 
 
 def check_trajectory(arrays: dict[str, np.ndarray], n_legs: int, period: float, source: str) -> int:
     """Schema, finiteness, 0/1 flags and the sampling period; the number of steps."""
+    arrays = _numeric(arrays, source)
     n = validate_raw(arrays, n_legs, source)
     if n < 2:
         raise SymbenchError(f"{source}: {n} step(s); a trajectory needs at least 2")
