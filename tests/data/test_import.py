@@ -87,6 +87,13 @@ def test_bad_logs_are_refused_with_a_clear_message(home, tmp_path, case):
     assert not (home / "datasets" / "bad-logs").exists()  # nothing half-imported
 
 
+def test_a_folder_without_import_json_is_explained(home, tmp_path):
+    folder = _write_log(tmp_path / "logs")
+    (folder / "import.json").unlink()
+    with pytest.raises(SymbenchError, match="no import.json naming the robot"):
+        import_logs(folder, "logs")
+
+
 def test_cli_import_info_and_export(smoke_hexa, tmp_path):
     runner = CliRunner()
     cli = build_cli()

@@ -92,6 +92,9 @@ def check_trajectory(arrays: dict[str, np.ndarray], n_legs: int, period: float, 
 
 
 def _manifest(folder: Path) -> tuple[dict[str, Any], list[dict[str, Any]]]:
+    if not (folder / IMPORT_JSON).is_file():
+        raise SymbenchError(f"{folder} has no {IMPORT_JSON} naming the robot and the record "
+                            "period (see 'Importing a real robot's logs' in the README)")
     spec = read_json(folder / IMPORT_JSON, "import")
     if not isinstance(spec, dict):
         raise SymbenchError(f"{folder / IMPORT_JSON}: expected a JSON object")
