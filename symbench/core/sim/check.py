@@ -26,7 +26,8 @@ class CheckReport:
                 "torque_within_limit": self.torque_within_limit, **self.metrics}
 
 
-def check(scenario: Scenario) -> CheckReport:
-    """Run `scenario` with the whole-body controller (recording nothing it does not need)."""
-    rollout = run_climb(Climb.from_scenario(scenario), scenario.seconds)
+def check(scenario: Scenario, control_period: float | None = None) -> CheckReport:
+    """Run `scenario` with the whole-body controller."""
+    rollout = run_climb(Climb.from_scenario(scenario), scenario.seconds,
+                        control_period=control_period)
     return CheckReport(scenario.to_dict(), rollout.attached, rollout.failure, rollout.metrics)

@@ -27,15 +27,17 @@ def sim() -> None:
               show_default=True, help="Step direction in the body frame.")
 @click.option("--seconds", type=float, default=10.0, show_default=True)
 @click.option("--seed", type=int, default=0, show_default=True)
+@click.option("--control-period", type=float, default=None,
+              help="Seconds between whole-body QP solves [default: every physics step, 1 ms].")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
 def check_command(robot: str, inclination: float, heading: float, yaw: float, direction: str,
-                  seconds: float, seed: int, as_json: bool) -> None:
+                  seconds: float, seed: int, control_period: float | None, as_json: bool) -> None:
     """Run the controller; exit status 1 when the robot detached."""
     from symbench.core.scenario import Scenario
     from symbench.core.sim.check import check
 
     scenario = Scenario(robot, inclination, heading, yaw, direction, None, seed, seconds)
-    report = check(scenario)
+    report = check(scenario, control_period)
     if as_json:
         click.echo(json.dumps(report.to_dict(), indent=2))
     else:
@@ -57,4 +59,5 @@ def _print_report(report) -> None:
     click.echo(f"  peak torque (coxa/femur/tibia): {m['peak_torque_coxa']:.2f} / "
                f"{m['peak_torque_femur']:.2f} / {m['peak_torque_tibia']:.2f} N m, "
                f"limit {m['torque_limit']:g} N m ({m['clipped_fraction']:.1%} of torques at the clip)")
-    click.echo(f"  real-time factor: {m['real_time_factor']:.2f}")
+    click.echo(f"  real-time factor: {m['real_time_factor']:.2f} "
+               f"(controller every {m['control_period'] * 1000:g} ms)")

@@ -1,8 +1,8 @@
 """Run the controller in the climbing environment and record raw trajectories.
 
-Per control step (1 kHz, the physics step): read the state x_t (dm-control keeps position-
-and velocity-dependent quantities of x_t up to date), compute the servo commands, record
-x_t, step, then record what the step did. MuJoCo's implicit integrator applies the servo
+Per physics step (1 kHz): read the state x_t (stepping as dm-control does, mj_step2 then
+mj_step1, keeps position- and velocity-dependent quantities of x_t up to date), compute the
+servo commands (every control period), record x_t, step, then record what the step did. MuJoCo's implicit integrator applies the servo
 damping (and the ankle dampers) at the end-of-step velocity, so the torque the joints
 really received is clip(u - Kp q_t - Kd qd_t+1) and the acceleration they really had is
 (qd_t+1 - qd_t) / dt: those are recorded, so that tau and qdd obey the same dynamics
@@ -53,17 +53,24 @@ class _Recorder:
         return {k: v[: self.rows] for k, v in self.cols.items()}
 
 
-def _record_period_steps(record_period: float, timestep: float) -> int:
-    k = round(record_period / timestep)
-    if k < 1 or abs(k * timestep - record_period) > 1e-9:
-        raise SymbenchError(f"record_period {record_period} s is not a multiple of the "
-                            f"control period {timestep} s")
+def _period_steps(period: float, timestep: float, what: str) -> int:
+    k = round(period / timestep)
+    if k < 1 or abs(k * timestep - period) > 1e-9:
+        raise SymbenchError(f"{what} {period} s is not a multiple of the physics step {timestep} s")
     return k
 
 
 def run_climb(climb: Climb, seconds: float, record_period: float = 0.006,
-              on_step: Callable[[ControlOutput, object], None] | None = None) -> Rollout:
-    """Simulate `climb` for `seconds`; stops early (attached=False) when the robot falls."""
+              on_step: Callable[[ControlOutput, object], None] | None = None,
+              control_period: float | None = None) -> Rollout:
+    """Simulate `climb` for `seconds`; stops early (attached=False) when the robot falls.
+
+    The whole-body controller runs every `control_period` seconds (default: every physics
+    step, the spec's timestep); between its calls the servos keep their command, their joint
+    feedback runs at every physics step inside MuJoCo.
+    """
+    import mujoco
+
     from symbench.core.sim.task import load_climb
 
     env = load_climb(climb, time_limit=seconds + 1.0)
@@ -74,23 +81,30 @@ def run_climb(climb: Climb, seconds: float, record_period: float = 0.006,
     controller = WholeBodyController(spec, model, lay, task.plan, climb.base_rotation)
     dt = model.opt.timestep
     n_steps = int(round(seconds / dt))
-    every = _record_period_steps(record_period, dt)
+    every = _period_steps(record_period, dt, "record_period")
+    control_every = _period_steps(control_period or dt, dt, "control_period")
     rec = _Recorder(n_steps // every + 1, spec.n_legs)
     cols = rec.cols
     normal, height0 = task.plan.normal, float(task.plan.base_start @ task.plan.normal)
-    action = np.zeros(model.nu)
     kp, kd, limit = spec.control.kp, spec.control.kd, spec.control.torque_limit
     failure = None
     stats = _Stats()
     wall = time.perf_counter()
     for step in range(n_steps):
         t = data.time
-        distance = physics.sole_distances()
-        contact = distance < spec.magnet.contact_distance
-        out = controller(data, t, distance < SOLE_MARGIN)
-        action[lay.motor] = out.command
-        action[lay.magnet] = out.magnet
-        row = rec.rows if step % every == 0 else -1
+        control, row = step % control_every == 0, rec.rows if step % every == 0 else -1
+        if control or row >= 0:
+            distance = physics.sole_distances()
+            contact = distance < spec.magnet.contact_distance
+        if control:
+            out = controller(data, t, distance < SOLE_MARGIN)
+            data.ctrl[lay.motor] = out.command
+            data.ctrl[lay.magnet] = out.magnet
+            stats.update(out, data, lay, task.plan)
+            failure = _detached(out, contact, data, lay, normal, height0)
+            if failure is not None:
+                failure = f"t={t:.3f} s: {failure}"
+                break
         if row >= 0:
             r_base = data.xmat[lay.base_body].reshape(3, 3)
             cols["t"][row] = t
@@ -103,11 +117,10 @@ def run_climb(climb: Climb, seconds: float, record_period: float = 0.006,
             linvel_now = data.qvel[:3].copy()
             cols["contact"][row] = contact
             cols["magnet"][row] = out.magnet > 0.0
-        stats.update(out, data, lay, task.plan)
-        # the Environment's step without building observations nobody reads here
-        task.before_step(action, physics)
-        physics.step()
-        task.after_step(physics)
+        # dm-control's (legacy) physics step without its per-step Python checks and
+        # observations: finish x_t (step2), then bring x_t+1 up to date (step1)
+        mujoco.mj_step2(model, data)
+        mujoco.mj_step1(model, data)
         if on_step is not None:
             on_step(out, physics)
         if row >= 0:
@@ -116,20 +129,19 @@ def run_climb(climb: Climb, seconds: float, record_period: float = 0.006,
             cols["qdd"][row] = (qd_next - qd_now) / dt
             cols["base_linacc"][row] = (data.qvel[:3] - linvel_now) / dt
             rec.rows += 1
-        failure = _detached(out, contact, data, lay, normal, height0)
-        if failure is not None:
-            failure = f"t={t:.3f} s: {failure}"
-            break
     wall = time.perf_counter() - wall
     arrays = rec.trimmed()
     validate_raw(arrays, spec.n_legs, source=f"rollout of {spec.name}")
     metrics = stats.summary(spec, data, task.plan)
     metrics.update(sim_seconds=float(data.time), wall_seconds=wall,
-                   real_time_factor=float(data.time) / wall if wall > 0 else float("inf"))
+                   real_time_factor=float(data.time) / wall if wall > 0 else float("inf"),
+                   control_period=control_every * dt)
     return Rollout(arrays, failure is None, failure, metrics)
 
 
 def _detached(out: ControlOutput, contact: np.ndarray, data, lay, normal, height0) -> str | None:
+    if not np.isfinite(data.qacc).all():
+        return "the physics diverged (non-finite accelerations)"
     lost = (out.targets.phase == STANCE) & ~contact
     if lost.any():
         return f"stance foot of leg(s) {', '.join(map(str, np.flatnonzero(lost)))} left the surface"
@@ -185,6 +197,9 @@ class _Stats:
         }
 
 
-def simulate(scenario: Scenario, record_period: float = 0.006) -> Rollout:
-    """The contract entry point: one scenario, raw columns every `record_period` seconds."""
-    return run_climb(Climb.from_scenario(scenario), scenario.seconds, record_period)
+def simulate(scenario: Scenario, record_period: float = 0.006,
+             control_period: float | None = None) -> Rollout:
+    """The contract entry point: one scenario, raw columns every `record_period` seconds
+    (controller every physics step unless `control_period` says otherwise)."""
+    return run_climb(Climb.from_scenario(scenario), scenario.seconds, record_period,
+                     control_period=control_period)
