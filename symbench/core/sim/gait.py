@@ -48,14 +48,13 @@ def min_jerk(u: float) -> tuple[float, float, float]:
 
 def hermite(p0, v0, p1, v1, u: float, duration: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Cubic Hermite segment at u in [0, 1]: position, velocity, acceleration."""
-    u2, u3 = u * u, u * u * u
-    h = (2 * u3 - 3 * u2 + 1, u3 - 2 * u2 + u, -2 * u3 + 3 * u2, u3 - u2)
-    dh = (6 * u2 - 6 * u, 3 * u2 - 4 * u + 1, -6 * u2 + 6 * u, 3 * u2 - 2 * u)
-    ddh = (12 * u - 6, 6 * u - 4, -12 * u + 6, 6 * u - 2)
-    T = duration
-    pos = h[0] * p0 + h[1] * T * v0 + h[2] * p1 + h[3] * T * v1
-    vel = (dh[0] * p0 + dh[1] * T * v0 + dh[2] * p1 + dh[3] * T * v1) / T
-    acc = (ddh[0] * p0 + ddh[1] * T * v0 + ddh[2] * p1 + ddh[3] * T * v1) / T**2
+    u2, u3, T = u * u, u * u * u, duration
+    basis = np.array([
+        [2 * u3 - 3 * u2 + 1, u3 - 2 * u2 + u, -2 * u3 + 3 * u2, u3 - u2],
+        [(6 * u2 - 6 * u) / T, (3 * u2 - 4 * u + 1) / T, (-6 * u2 + 6 * u) / T, (3 * u2 - 2 * u) / T],
+        [(12 * u - 6) / T**2, (6 * u - 4) / T**2, (-12 * u + 6) / T**2, (6 * u - 2) / T**2],
+    ])
+    pos, vel, acc = basis @ np.stack([p0, T * v0, p1, T * v1])
     return pos, vel, acc
 
 
