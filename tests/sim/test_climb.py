@@ -142,6 +142,8 @@ def test_sim_check_and_bench_commands():
     assert bench["ratio"] == pytest.approx(bench["control_steps_per_s"] / bench["raw_mj_step_per_s"])
     result = runner.invoke(cli, ["sim", "check", "--robot", "hexx"])
     assert result.exit_code != 0 and "hexa" in result.output
+    result = runner.invoke(cli, ["sim", "mjcf", "--robot", "nona", "--inclination", "90"])
+    assert result.exit_code == 0 and result.output.count("<adhesion") == 9
 
 
 def test_a_plugin_robot_that_falls_makes_sim_check_fail(tmp_path):

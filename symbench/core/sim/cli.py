@@ -61,3 +61,18 @@ def _print_report(report) -> None:
                f"limit {m['torque_limit']:g} N m ({m['clipped_fraction']:.1%} of torques at the clip)")
     click.echo(f"  real-time factor: {m['real_time_factor']:.2f} "
                f"(controller every {m['control_period'] * 1000:g} ms)")
+
+
+@sim.command("mjcf")
+@click.option("--robot", required=True, help="Registered robot, e.g. hexa.")
+@click.option("--inclination", type=float, default=0.0, show_default=True)
+@click.option("--heading", type=float, default=0.0, show_default=True)
+def mjcf_command(robot: str, inclination: float, heading: float) -> None:
+    """Print the generated MJCF of ROBOT on its arena (for inspection; never stored)."""
+    from symbench.core.robots import load_robot
+    from symbench.core.sim.arena import Arena
+    from symbench.core.sim.model import build_spec
+
+    spec = build_spec(load_robot(robot), Arena(inclination, heading))
+    spec.compile()
+    click.echo(spec.to_xml())

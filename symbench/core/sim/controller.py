@@ -1,13 +1,16 @@
 """Whole-body controller: task-space inverse dynamics as a QP, then joint feedback.
 
 Every control step:
-1. The QP (variables: accelerations of the base and the actuated joints, and the force the
-   surface plus the magnet exert on each foot) tracks the base pose and the swing ankle
-   with task accelerations, subject to the floating-base rows of M qdd + h = S'tau + J'f,
-   zero acceleration of the stance ankles, friction pyramids widened by the magnet pull
+1. The QP tracks the base pose and the swing ankle with task accelerations. Its variables
+   are the base acceleration, the swing leg's joint accelerations and the force that the
+   surface plus the magnet exert on each foot; the stance legs' joint accelerations follow
+   from zero (damped) stance-ankle acceleration. Constraints: the floating-base rows of
+   M qdd + h = S'tau + J'f, friction pyramids widened by the magnet pull
    (|f_t| <= mu (f_n + F_magnet)), zero force on a lifted foot, and torque limits. M comes
-   from mj_fullM, h from qfrc_bias, J from mj_jac at the ankle (the passive gimbal passes
-   the foot's force through it; gimbal accelerations are taken as zero).
+   from mj_fullM, h from qfrc_bias, the ankle Jacobians from MuJoCo's joint axes and
+   anchors (the passive gimbal passes the foot's force through the ankle; gimbal
+   accelerations are taken as zero, and so are the Jacobians' velocity products, small at
+   this gait's speeds).
 2. Joint references from closed-form leg IK of the base reference and the ankle targets
    (stance: where the ankle is; swing: the spline).
 3. Applied torque = feed-forward + Kp (q_ref - q) + Kd (qd_ref - qd), clipped to the limit;
@@ -29,7 +32,6 @@ from symbench.core.sim.kinematics import leg_ik
 from symbench.core.sim.layout import ModelLayout
 from symbench.core.sim.model import ankle_to_sole
 from symbench.core.sim.qp import INF, DenseQP, InfeasibleQP
-
 
 LEVI_CIVITA = np.zeros((3, 3, 3))  # cross products as one einsum: (a x b)_i = e_ijk a_j b_k
 LEVI_CIVITA[0, 1, 2] = LEVI_CIVITA[1, 2, 0] = LEVI_CIVITA[2, 0, 1] = 1.0
@@ -60,10 +62,8 @@ class ControllerGains:
 class ControlOutput:
     command: np.ndarray  # (n, 3) servo input u = tau_ff + Kp q_ref + Kd qd_ref
     tau: np.ndarray  # (n, 3) torque the servo applies at this state: clip(u - Kp q - Kd qd)
-    tau_ff: np.ndarray  # (n, 3) QP feed-forward
     magnet: np.ndarray  # (n,)
     targets: GaitTargets
-    q_ref: np.ndarray  # (n, 3)
 
 
 def _vee_error(r_ref: np.ndarray, r: np.ndarray) -> np.ndarray:
@@ -107,7 +107,7 @@ class WholeBodyController:
         self._C[rows, cols] = self.cone
         self._legs = np.arange(n)
         self._liftoff: tuple[int, np.ndarray | None] = (-1, None)  # (slot, sole at release)
-        self._eye3, self._eye6, self._eye9 = np.eye(3), np.eye(6), np.eye(9)
+        self._eye3, self._eye6 = np.eye(3), np.eye(6)
         self._tau_max = np.tile(self.limit * self.gains.torque_margin, n)
         self._jb = np.zeros((n, 3, 6))
         self._jb[:, :, :3] = np.eye(3)
@@ -229,4 +229,4 @@ class WholeBodyController:
         qd_ref = np.linalg.solve(jlt @ jl + IK_DAMPING**2 * self._eye3, rhs)[..., 0]
         command = tau_ff + self.kp * q_ref + self.kd * qd_ref
         tau = np.clip(command - self.kp * q - self.kd * qd, -self.limit, self.limit)
-        return ControlOutput(command, tau, tau_ff, tg.magnet, tg, q_ref)
+        return ControlOutput(command, tau, tg.magnet, tg)

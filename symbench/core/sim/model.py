@@ -14,6 +14,7 @@ import numpy as np
 
 from symbench.core.robots import JOINT_NAMES, RobotSpec
 from symbench.core.sim.arena import Arena, mat_to_quat
+from symbench.core.sim.kinematics import leg_fk
 
 SURFACE = "surface"
 BASE = "base"
@@ -24,10 +25,10 @@ JOINT_AXES = ((0.0, 0.0, 1.0), (0.0, -1.0, 0.0), (0.0, -1.0, 0.0))
 # Collision bits: the surface touches robot geoms, robot geoms never touch each other.
 SURFACE_BITS, ROBOT_BITS = (1, 2), (2, 1)
 # The magnet presses a light foot with 147 N: MuJoCo's default soft contact would let it sink
-# 6 mm, so the soles get the stiffest stable contact (time constant of two steps; 1.8 mm
-# under the full pull). The adhesion acts only on contacts MuJoCo detects, so the soles get
-# a 2 mm margin: the magnet attracts a sole within 2 mm of the surface, and under the full
-# pull the sole rests 0.2 mm from it (a released foot floats 1.9 mm off it).
+# about 6 mm, so the soles get the stiffest stable contact (time constant of two steps; under
+# 2 mm). The adhesion acts only on contacts MuJoCo detects, so the soles get a 2 mm margin:
+# the magnet attracts a pad within 2 mm of the surface and, under the full pull, presses it
+# back onto the surface (a released pad rests about 2 mm off it).
 SOLE_SOLREF = (0.002, 1.0)
 SOLE_SOLIMP = (0.95, 0.99, 0.001, 0.5, 2.0)
 SOLE_MARGIN = 0.002  # m
@@ -57,8 +58,6 @@ def ankle_to_sole(spec: RobotSpec) -> float:
 
 def stance_height(spec: RobotSpec) -> float:
     """Base-origin height above the surface in the nominal stance (gimbal centred)."""
-    from symbench.core.sim.kinematics import leg_fk
-
     ankle = leg_fk(spec, np.asarray(spec.leg.stance)[None, :])[0]
     return -(spec.mount_z + ankle[2] - ankle_to_sole(spec))
 

@@ -2,13 +2,13 @@
 
 Per physics step (1 kHz): read the state x_t (stepping as dm-control does, mj_step2 then
 mj_step1, keeps position- and velocity-dependent quantities of x_t up to date), compute the
-servo commands (every control period), record x_t, step, then record what the step did. MuJoCo's implicit integrator applies the servo
-damping (and the ankle dampers) at the end-of-step velocity, so the torque the joints
-really received is clip(u - Kp q_t - Kd qd_t+1) and the acceleration they really had is
-(qd_t+1 - qd_t) / dt: those are recorded, so that tau and qdd obey the same dynamics
-(`data.qacc`, the explicit forward acceleration, would not). base_linacc likewise is the
-change of the base origin's world velocity over the step, which excludes gravity.
-Rows are kept every `record_period` seconds.
+servo commands (every control period), record x_t, step, then record what the step did.
+MuJoCo's implicit integrator applies the servo damping (and the ankle dampers) at the end-
+of-step velocity, so the torque the joints really received is clip(u - Kp q_t - Kd qd_t+1)
+and the acceleration they really had is (qd_t+1 - qd_t) / dt: those are recorded, so that
+tau and qdd obey the same dynamics (`data.qacc`, the explicit forward acceleration, would
+not). base_linacc likewise is the change of the base origin's world velocity over the
+step, which excludes gravity. Rows are kept every `record_period` seconds.
 """
 
 from __future__ import annotations
