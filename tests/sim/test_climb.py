@@ -143,7 +143,7 @@ def test_sim_check_and_bench_commands():
     result = runner.invoke(cli, ["sim", "check", "--robot", "hexx"])
     assert result.exit_code != 0 and "hexa" in result.output
     result = runner.invoke(cli, ["sim", "mjcf", "--robot", "nona", "--inclination", "90"])
-    assert result.exit_code == 0 and result.output.count("<adhesion") == 9
+    assert result.exit_code == 0 and result.output.count("_magnet\" body=\"leg") == 9
 
 
 def test_a_plugin_robot_that_falls_makes_sim_check_fail(tmp_path):
