@@ -24,16 +24,21 @@ Predict = Callable[[dict[str, np.ndarray]], np.ndarray]
 
 @dataclass(frozen=True)
 class TrainedOnSplit:
-    """A model of the same architecture trained on some split, with that split's test set."""
+    """A model of the same architecture trained on some split and variant, with its test set."""
 
     split: str
+    variant: str
     predict: Predict
     test: ViewArrays
 
 
 @dataclass
 class EvaluationContext:
-    """Everything an evaluator may use. `retrain(split)` trains the same model on another split."""
+    """Everything an evaluator may use.
+
+    `retrain(split, variant)` trains the same architecture on another split or input variant
+    (the closed-loop evaluator needs the `next` variant); results are cached per pair.
+    """
 
     entry: ModelEntry
     dataset: Any  # symbench.core.data.dataset.Dataset
@@ -43,9 +48,9 @@ class EvaluationContext:
     test: ViewArrays
     test_trajectories: np.ndarray
     output_dir: Path
-    retrain: Callable[[str], TrainedOnSplit]
+    retrain: Callable[[str, str], TrainedOnSplit]
     max_samples: int = 4096  # cap on samples for the transform-based evaluators
-    _trained: dict[str, TrainedOnSplit] = field(default_factory=dict, repr=False)
+    _trained: dict[tuple[str, str], TrainedOnSplit] = field(default_factory=dict, repr=False)
 
     @property
     def robot(self):
@@ -54,13 +59,14 @@ class EvaluationContext:
     def predictions(self) -> np.ndarray:
         return self.on_split(self.split).predict(self.test.inputs)
 
-    def on_split(self, split: str) -> TrainedOnSplit:
-        """This run's model for its own split; a retrained one (cached) for any other."""
-        if split == self.split:
-            return TrainedOnSplit(split, self.predict, self.test)
-        if split not in self._trained:
-            self._trained[split] = self.retrain(split)
-        return self._trained[split]
+    def on_split(self, split: str, variant: str | None = None) -> TrainedOnSplit:
+        """This run's model for its own split and variant; a retrained one (cached) otherwise."""
+        variant = variant or self.entry.variant
+        if (split, variant) == (self.split, self.entry.variant):
+            return TrainedOnSplit(split, variant, self.predict, self.test)
+        if (split, variant) not in self._trained:
+            self._trained[split, variant] = self.retrain(split, variant)
+        return self._trained[split, variant]
 
     def test_raw(self) -> tuple[dict[str, np.ndarray], np.ndarray]:
         """Raw columns of the test trajectories (whole trajectories, up to `max_samples` rows)."""

@@ -60,7 +60,7 @@ def check_consistent(records: Iterable[tuple[Path, ResultRecord]]) -> None:
 
 def _flat(record: ResultRecord) -> dict:
     row = {"robot": record.robot, "split": record.split, "model": record.model.name,
-           "backend": record.model.backend, "seed": record.seed,
+           "variant": record.model.variant, "backend": record.model.backend, "seed": record.seed,
            "dataset": record.dataset.id, "parameters": record.model.parameters}
     for (evaluator, metric), column in COLUMNS.items():
         value = record.metrics.get(evaluator, {}).get(metric)
@@ -69,15 +69,15 @@ def _flat(record: ResultRecord) -> dict:
 
 
 def aggregate(records: list[tuple[Path, ResultRecord]]) -> pd.DataFrame:
-    """Mean and standard deviation over seeds per (robot, split, model, backend), ranked."""
+    """Mean and standard deviation over seeds per (robot, split, model, variant, backend), ranked."""
     check_consistent(records)
     runs = pd.DataFrame([_flat(r) for _, r in records])
-    duplicate = runs.duplicated(["robot", "split", "model", "backend", "seed"])
+    duplicate = runs.duplicated(["robot", "split", "model", "variant", "backend", "seed"])
     if duplicate.any():
         first = runs[duplicate].iloc[0]
         raise SymbenchError(f"two records for the same run: {first['robot']} {first['split']} "
                             f"{first['model']} {first['backend']} seed {first['seed']}")
-    keys = ["robot", "split", "model", "backend"]
+    keys = ["robot", "split", "model", "variant", "backend"]
     metrics = [c for c in COLUMNS.values() if runs[c].notna().any()]
     grouped = runs.groupby(keys, sort=True)
     table = grouped.agg(seeds=("seed", "nunique"), parameters=("parameters", "first"),
@@ -87,7 +87,7 @@ def aggregate(records: list[tuple[Path, ResultRecord]]) -> pd.DataFrame:
         table[f"{m}_std"] = grouped[m].std(ddof=1)
     table = table.reset_index()
     table["rank"] = table.groupby(["robot", "split"])["rmse_Nm_mean"].rank(method="min").astype(int)
-    return table.sort_values(["robot", "split", "rank", "model", "backend"]).reset_index(drop=True)
+    return table.sort_values(["robot", "split", "rank", "model", "variant", "backend"]).reset_index(drop=True)
 
 
 def _cell(mean: float, std: float) -> str:
@@ -102,12 +102,12 @@ def markdown(table: pd.DataFrame, robot: str) -> str:
     lines = [f"# {robot}", ""]
     for split, part in table[table.robot == robot].groupby("split", sort=True):
         lines += [f"## {split}", "",
-                  "| rank | model | backend | seeds | " + " | ".join(metrics) + " |",
-                  "|---|---|---|---|" + "---|" * len(metrics)]
+                  "| rank | model | variant | backend | seeds | " + " | ".join(metrics) + " |",
+                  "|---|---|---|---|---|" + "---|" * len(metrics)]
         for _, row in part.iterrows():
             cells = [_cell(row[f"{m}_mean"], row[f"{m}_std"]) for m in metrics]
             flag = "" if row.seeds >= MIN_SEEDS else f" (<{MIN_SEEDS})"
-            lines.append(f"| {row['rank']} | {row.model} | {row.backend} | {row.seeds}{flag} | "
+            lines.append(f"| {row['rank']} | {row.model} | {row.variant} | {row.backend} | {row.seeds}{flag} | "
                          + " | ".join(cells) + " |")
         lines.append("")
     return "\n".join(lines)
@@ -120,9 +120,9 @@ def sample_efficiency_plot(table: pd.DataFrame, robot: str, path: Path) -> bool:
         return False
     rows["fraction"] = rows.split.str.removeprefix("fraction-").astype(float)
     curves = {}
-    for (model, backend), part in rows.groupby(["model", "backend"], sort=True):
+    for (model, variant, backend), part in rows.groupby(["model", "variant", "backend"], sort=True):
         part = part.sort_values("fraction")
-        curves[f"{model} ({backend})"] = (part.fraction.tolist(), part.rmse_Nm_mean.tolist(),
+        curves[f"{model} ({variant}, {backend})"] = (part.fraction.tolist(), part.rmse_Nm_mean.tolist(),
                                           part.rmse_Nm_std.fillna(0).tolist())
     sample_efficiency_png(curves, f"{robot}: sample efficiency", path)
     return True

@@ -30,8 +30,8 @@ def standard_hash(dataset_id: str, source: Path) -> str:
     return read_metadata(dataset_id, missing_hint(dataset_id))[1]["content_hash"]
 
 
-def _group(r: ResultRecord) -> tuple[str, str, str, str]:
-    return (r.robot, r.split, r.model.name, r.model.backend)
+def _group(r: ResultRecord) -> tuple[str, ...]:
+    return (r.robot, r.split, r.model.name, r.model.variant, r.model.backend)
 
 
 def publish(paths: list[Path], board: Path) -> list[Path]:

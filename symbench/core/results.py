@@ -77,7 +77,7 @@ class ResultRecord(_Strict):
     def key(self) -> str:
         """What identifies a run in a sweep: one record per key."""
         m = self.model
-        return f"{self.robot}__{self.split}__{m.name}__{m.backend}__seed{self.seed}"
+        return f"{self.robot}__{self.split}__{m.name}__{m.variant}__{m.backend}__seed{self.seed}"
 
 
 def _explain(error: ValidationError, source: str) -> SymbenchError:

@@ -19,6 +19,8 @@ from symbench.core.runner import DEFAULT_EVALUATORS, RunSpec, run as run_spec
 @click.option("--split", default="iid", show_default=True, help="A registered split.")
 @click.option("--seed", default=0, show_default=True, type=int)
 @click.option("--preset", default="small", show_default=True, help="smoke, small or paper.")
+@click.option("--variant", type=click.Choice(["acc", "next"]), default=None,
+              help="Input variant (default: the model's; closed-loop control uses next).")
 @click.option("--evaluators", default=",".join(DEFAULT_EVALUATORS), show_default=True,
               help="Comma-separated evaluator names (see `symbench list evaluators`).")
 @click.option("--output", type=click.Path(path_type=Path), default=Path("results"),
@@ -27,11 +29,11 @@ from symbench.core.runner import DEFAULT_EVALUATORS, RunSpec, run as run_spec
               help="Processes for dataset generation.")
 @click.option("--max-epochs", type=int, default=None, help="Override the preset's epoch cap.")
 def run(model_name: str, robot_name: str, backend: str, split: str, seed: int, preset: str,
-        evaluators: str, output: Path, workers: int, max_epochs: int | None) -> None:
+        variant: str | None, evaluators: str, output: Path, workers: int, max_epochs: int | None) -> None:
     """Train and evaluate MODEL on ROBOT (generating the dataset when missing)."""
     console = Console()
     spec = RunSpec(model=model_name, robot=robot_name, backend=backend, split=split, seed=seed,
-                   preset=preset, evaluators=tuple(e.strip() for e in evaluators.split(",") if e.strip()),
+                   preset=preset, variant=variant, evaluators=tuple(e.strip() for e in evaluators.split(",") if e.strip()),
                    output=output, workers=workers, max_epochs=max_epochs)
     record = run_spec(spec, on_stage=lambda stage: console.print(f"[bold]{stage}[/]"))
     console.print(metrics_table(record))

@@ -8,15 +8,16 @@ from __future__ import annotations
 
 import time
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from datetime import datetime, timezone
 from pathlib import Path
 
 from symbench.core import registry
-from symbench.core.errors import SymbenchError
+from symbench.core.errors import SymbenchError, UnknownNameError
 from symbench.core.evaluation import EvaluationContext, TrainedOnSplit, run_evaluators
 from symbench.core.provenance import git_commit, hardware, library_versions
 from symbench.core.results import ResultRecord, write_record
+from symbench.core.schema import VARIANTS
 
 # Epoch caps of the training protocol per preset (the stopping rule usually ends earlier).
 MAX_EPOCHS = {"smoke": 3, "small": 60, "paper": 500}
@@ -32,6 +33,7 @@ class RunSpec:
     split: str = "iid"
     seed: int = 0
     preset: str = "small"
+    variant: str | None = None  # None: the model's registered input variant
     evaluators: tuple[str, ...] = DEFAULT_EVALUATORS
     output: Path = Path("results")
     workers: int = 2
@@ -39,7 +41,9 @@ class RunSpec:
     max_epochs: int | None = None  # None: the preset's cap
 
     def key(self) -> str:
-        return f"{self.robot}__{self.split}__{self.model}__{self.backend}__seed{self.seed}"
+        """Matches `ResultRecord.key()`: the variant is resolved from the registry."""
+        variant = model_entry(self).variant
+        return f"{self.robot}__{self.split}__{self.model}__{variant}__{self.backend}__seed{self.seed}"
 
     @property
     def record_path(self) -> Path:
@@ -58,16 +62,24 @@ class Timer:
             self.timings[name] = self.timings.get(name, 0.0) + time.perf_counter() - start
 
 
+def model_entry(spec: RunSpec):
+    """The registered model, with the run's input variant when it names one."""
+    entry = registry.model(spec.model, spec.backend)
+    if spec.variant is None:
+        return entry
+    if spec.variant not in VARIANTS:
+        raise UnknownNameError("input variant", spec.variant, VARIANTS)
+    return replace(entry, variant=spec.variant)
+
+
 def check_names(spec: RunSpec) -> None:
     """Every name resolves before any minute is spent (closest names otherwise)."""
-    registry.model(spec.model, spec.backend)
+    model_entry(spec)
     registry.robot(spec.robot)
     registry.split(spec.split)
     for name in spec.evaluators:
         registry.evaluator(name)
     if spec.preset not in MAX_EPOCHS:
-        from symbench.core.errors import UnknownNameError
-
         raise UnknownNameError("preset", spec.preset, MAX_EPOCHS)
 
 
@@ -83,7 +95,7 @@ def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> 
     from symbench.core.training import TrainConfig, train
 
     check_names(spec)
-    entry = registry.model(spec.model, spec.backend)
+    entry = model_entry(spec)
     timer = Timer()
     on_stage("dataset")
     dataset = timer.measure("dataset_s", ensure_dataset, spec)
@@ -91,19 +103,22 @@ def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> 
                          progress=spec.progress)
     checkpoints = spec.output / "checkpoints" / spec.key()
 
-    def train_on(split: str):
+    def train_on(split: str, variant: str):
+        model_of = replace(entry, variant=variant)
         parts = dataset.split_indices(split, spec.seed)
-        train_set, val_set, test_set = dataset.split_views(entry.view, entry.variant, split, spec.seed)
-        model = train(entry, train_set, val_set, config, checkpoint_dir=checkpoints / split)
+        train_set, val_set, test_set = dataset.split_views(entry.view, variant, split, spec.seed)
+        model = train(model_of, train_set, val_set, config,
+                      checkpoint_dir=checkpoints / f"{split}__{variant}")
         return model, parts, (train_set, val_set, test_set)
 
     on_stage("training")
-    model, parts, (train_set, val_set, test_set) = timer.measure("training_s", train_on, spec.split)
+    model, parts, (train_set, val_set, test_set) = timer.measure(
+        "training_s", train_on, spec.split, entry.variant)
 
-    def retrain(split: str) -> TrainedOnSplit:
-        on_stage(f"training on {split}")
-        other, _, (_, _, other_test) = timer.measure("retraining_s", train_on, split)
-        return TrainedOnSplit(split, other.predict, other_test)
+    def retrain(split: str, variant: str) -> TrainedOnSplit:
+        on_stage(f"training on {split} ({variant} variant)")
+        other, _, (_, _, other_test) = timer.measure("retraining_s", train_on, split, variant)
+        return TrainedOnSplit(split, variant, other.predict, other_test)
 
     context = EvaluationContext(entry=entry, dataset=dataset, split=spec.split, seed=spec.seed,
                                 predict=model.predict, test=test_set,

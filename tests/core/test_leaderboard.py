@@ -51,7 +51,7 @@ def test_tables_and_plot_regenerate_identically(tmp_path, make_record):
     second = write_leaderboard(tmp_path / "records", tmp_path / "out")
     assert {p.name: p.read_bytes() for p in second if p.suffix != ".png"} == before
     nona = (tmp_path / "out" / "nona.md").read_text()
-    assert "| 1 | sdnn | torch | 2 (<3) |" in nona  # too few seeds is flagged
+    assert "| 1 | sdnn | acc | torch | 2 (<3) |" in nona  # too few seeds is flagged
 
 
 def test_empty_folder_is_a_clear_error(tmp_path):

@@ -23,7 +23,7 @@ def test_round_trip(valid_record, tmp_path):
     path = tmp_path / "r.json"
     written = write_record(valid_record(), path)
     assert read_record(path) == written
-    assert written.key() == "hexa__iid__sdnn__torch__seed0"
+    assert written.key() == "hexa__iid__sdnn__acc__torch__seed0"
     assert not list(tmp_path.glob(".*tmp"))  # the atomic write left no temp file
 
 

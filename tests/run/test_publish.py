@@ -26,8 +26,8 @@ def test_three_seeds_on_the_standard_dataset_are_published(smoke_hash, make_reco
     board = tmp_path / "leaderboards"
     written = publish(paths, board)
     assert sorted(p.name for p in (board / "records").iterdir()) == [
-        f"hexa__iid__sdnn__torch__seed{s}.json" for s in range(3)]
-    assert board / "hexa.md" in written and "| 1 | sdnn | torch | 3 |" in (board / "hexa.md").read_text()
+        f"hexa__iid__sdnn__acc__torch__seed{s}.json" for s in range(3)]
+    assert board / "hexa.md" in written and "| 1 | sdnn | acc | torch | 3 |" in (board / "hexa.md").read_text()
     publish(paths[:1], board)  # publishing the same record again changes nothing
 
 

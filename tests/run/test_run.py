@@ -45,7 +45,7 @@ def test_cli_prints_a_table_and_writes_the_record(smoke_home, tmp_path):
         "--evaluators", "torque-error", "--output", str(tmp_path)], catch_exceptions=False)
     assert result.exit_code == 0, result.output
     assert "torque-error" in result.stdout and "rmse" in result.stdout
-    assert read_record(tmp_path / "hexa__iid__sdnn__torch__seed0.json").split == "iid"
+    assert read_record(tmp_path / "hexa__iid__sdnn__acc__torch__seed0.json").split == "iid"
 
 
 def test_names_are_checked_before_any_work(tmp_path):
@@ -57,3 +57,15 @@ def test_names_are_checked_before_any_work(tmp_path):
         run(RunSpec(model="sdnn", robot="hexa", preset="huge", evaluators=("torque-error",),
                     output=tmp_path))
     assert not list(tmp_path.iterdir())
+
+
+def test_a_run_may_choose_the_next_variant(smoke_home, tmp_path):
+    spec = RunSpec(model="sdnn", robot="hexa", preset="smoke", variant="next",
+                   evaluators=("torque-error", "equivariance"), output=tmp_path,
+                   progress=False, max_epochs=2)
+    record = run(spec)
+    assert record.model.variant == "next"
+    assert spec.record_path.name == "hexa__iid__sdnn__next__torch__seed0.json"
+    assert record.metrics["equivariance"]["max_rel_error"] < 1e-4
+    with pytest.raises(UnknownNameError, match="did you mean next"):
+        run(RunSpec(model="sdnn", robot="hexa", variant="nxt", output=tmp_path))
