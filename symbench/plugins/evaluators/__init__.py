@@ -5,10 +5,10 @@ from __future__ import annotations
 import symbench
 from symbench.core.entries import EvaluatorEntry
 from symbench.plugins.evaluators import (
-    equivariance, generalization, invariance, sample_efficiency, torque_error,
+    closed_loop, equivariance, generalization, invariance, sample_efficiency, torque_error,
 )
 
-MODULES = (torque_error, equivariance, invariance, generalization, sample_efficiency)
+MODULES = (torque_error, equivariance, invariance, generalization, sample_efficiency, closed_loop)
 
 
 @symbench.hookimpl

@@ -1,0 +1,53 @@
+"""Closed-loop control: the tracking loop tells a good controller from a useless one."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from symbench.core.runner import RunSpec, run
+from symbench.core.scenario import Scenario
+from symbench.core.sim.learned_control import track
+from symbench.core.sim.rollout import simulate
+
+PD = (2.0, 0.3)  # a tenth of hexa's servo gains, as the evaluator uses
+
+
+@pytest.fixture(scope="module")
+def wall_reference():
+    scenario = Scenario(robot="hexa", inclination_deg=90.0, seconds=2.0)
+    reference = simulate(scenario)
+    assert reference.attached
+    return scenario, reference.arrays
+
+
+def test_expert_torques_with_small_pd_track_the_reference(wall_reference):
+    scenario, ref = wall_reference
+
+    def replay(rows):  # the torque the expert applied at the start of this period
+        k = int(np.argmin(np.abs(ref["t"] - rows["t"][1]))) - 1
+        return ref["tau"][k]
+
+    result = track(scenario, ref, replay, PD)
+    assert result.attached and result.failure is None
+    assert result.time_to_failure_s == pytest.approx(ref["t"][-1] - ref["t"][0])
+    assert result.joint_rmse_rad < 0.02
+
+
+def test_zero_torque_falls_off_the_wall(wall_reference):
+    scenario, ref = wall_reference
+    result = track(scenario, ref, lambda rows: np.zeros((6, 3)), PD)
+    assert not result.attached
+    assert "left the surface" in result.failure or "tilted" in result.failure
+    assert result.time_to_failure_s < ref["t"][-1]
+
+
+def test_closed_loop_evaluator_in_a_run(smoke_home, tmp_path):
+    record = run(RunSpec(model="sdnn", robot="hexa", preset="smoke", evaluators=("closed-loop",),
+                         output=tmp_path, progress=False, max_epochs=2))
+    metrics = record.metrics["closed-loop"]
+    assert metrics["references"] >= 1 and metrics["horizon_s"] == 0.3
+    for prefix in ("", "pd_"):
+        assert 0.0 <= metrics[f"{prefix}success_rate"] <= 1.0
+        assert 0.0 < metrics[f"{prefix}time_to_failure_s"] <= metrics["horizon_s"]
+        assert metrics[f"{prefix}joint_rmse_rad"] >= 0.0
