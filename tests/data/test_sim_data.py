@@ -140,3 +140,31 @@ def test_generating_the_smoke_preset_twice_gives_the_same_hash(tmp_path, monkeyp
     assert a.content_hash == b.content_hash and a.n_trajectories + a.n_failed == 4
     for path in sorted((a.root / "trajectories").iterdir()):
         assert path.read_bytes() == (b.root / "trajectories" / path.name).read_bytes()
+
+
+@pytest.mark.slow
+def test_ctrl_c_during_generation_keeps_finished_work_and_resumes(tmp_path):
+    """The real thing: Ctrl-C (SIGINT to the process group) with 2 workers, then resume."""
+    import os
+    import signal
+    import subprocess
+    import sys
+    import time
+    from pathlib import Path
+
+    env = dict(os.environ, MUJOCO_GL="disable", SYMBENCH_HOME=str(tmp_path))
+    command = [str(Path(sys.executable).with_name("symbench")), "data", "generate", "--robot",
+               "magneto", "--preset", "small", "--no-progress"]
+    proc = subprocess.Popen(command, env=env, start_new_session=True, stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    folder = tmp_path / "datasets" / "magneto-climb-small-v1" / "records"
+    while not folder.is_dir() or len(list(folder.glob("*.json"))) < 3:
+        time.sleep(0.2)
+    os.killpg(proc.pid, signal.SIGINT)
+    out = proc.communicate(timeout=60)[0].decode()
+    assert proc.returncode == 1 and "run the same command again to resume" in out
+    kept = len(list(folder.glob("*.json")))
+    resumed = subprocess.run(command, env=env, capture_output=True, text=True, timeout=600)
+    assert resumed.returncode == 0, resumed.stderr
+    assert f"{kept} kept" in resumed.stdout.replace("\n", " ")
