@@ -11,7 +11,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from symbench.core.robots import JOINT_NAMES, RobotSpec
-from symbench.core.sim.model import BASE, SURFACE, joint_name, magnet_name, sole_name
+from symbench.core.sim.model import (BASE, PAD_SPHERE_RADIUS, PAD_SPHERES, SURFACE, joint_name,
+                                     magnet_name, sole_name)
 
 
 @dataclass(frozen=True)
@@ -24,7 +25,7 @@ class ModelLayout:
     magnet: np.ndarray  # (n,) actuator ids of the adhesion actuators
     ankle_pitch: np.ndarray  # (n,) qpos addresses of the first (pitch) gimbal joint
     ankle_body: np.ndarray  # (n,) body ids of the first gimbal link (origin = ankle)
-    sole_geom: np.ndarray  # (n,) geom ids of the soles
+    sole_geom: np.ndarray  # (n, PAD_SPHERES) geom ids of each foot's pad spheres
     surface_geom: int
     base_body: int
     reduced: np.ndarray  # (6 + 3n,) dofs the controller models: base, then actuated joints
@@ -54,17 +55,17 @@ class ModelLayout:
             ankle_pitch=model.jnt_qposadr[[jid(i, "ankle0") for i in range(n)]],
             ankle_body=np.array([mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, f"leg{i}_ankle0")
                                  for i in range(n)]),
-            sole_geom=np.array([mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, sole_name(i))
-                                for i in range(n)]),
+            sole_geom=np.array([[mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, sole_name(i, k))
+                                 for k in range(PAD_SPHERES)] for i in range(n)]),
             surface_geom=mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, SURFACE),
             base_body=base,
             reduced=np.concatenate([base_dof + np.arange(6), dof.reshape(-1)]),
         )
 
-    def sole_distances(self, model, data, cap: float) -> np.ndarray:
-        """(n,) MuJoCo's signed distance between each sole and the climbing surface (values
-        above `cap` come back as `cap`)."""
-        import mujoco
-
-        return np.array([mujoco.mj_geomDistance(model, data, g, self.surface_geom, cap, None)
-                         for g in self.sole_geom])
+    def sole_distances(self, data) -> np.ndarray:
+        """(n,) signed distance from each foot's pad to the climbing surface: the nearest pad
+        sphere's, from MuJoCo's geom poses (the sphere-plane distance MuJoCo's collision
+        uses: centre height above the plane minus the radius)."""
+        normal = data.geom_xmat[self.surface_geom][2::3]  # the plane's z axis
+        height = (data.geom_xpos[self.sole_geom] - data.geom_xpos[self.surface_geom]) @ normal
+        return height.min(axis=1) - PAD_SPHERE_RADIUS

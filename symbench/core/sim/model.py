@@ -32,7 +32,12 @@ SURFACE_BITS, ROBOT_BITS = (1, 2), (2, 1)
 SOLE_SOLREF = (0.002, 1.0)
 SOLE_SOLIMP = (0.95, 0.99, 0.001, 0.5, 2.0)
 SOLE_MARGIN = 0.002  # m
-SOLE_HALF_THICKNESS = 0.004  # m
+# The pad is four small spheres on a ring, not a flat cylinder: a flat face resting on a
+# plane makes MuJoCo switch between one and several contacts on rounding noise, which breaks
+# the exact symmetry of a rotated run; a sphere always makes exactly one contact. Four of
+# them keep the pad from rolling on the passive gimbal (a single sphere let ankles creep).
+PAD_SPHERES = 4
+PAD_SPHERE_RADIUS = 0.003  # m
 
 
 def joint_name(leg: int, joint: str) -> str:
@@ -43,8 +48,15 @@ def foot_name(leg: int) -> str:
     return f"leg{leg}_foot"
 
 
-def sole_name(leg: int) -> str:
-    return f"leg{leg}_sole"
+def sole_name(leg: int, k: int) -> str:
+    return f"leg{leg}_sole{k}"
+
+
+def pad_points(spec: RobotSpec) -> np.ndarray:
+    """(PAD_SPHERES, 2) pad sphere centres across the foot axis (foot y, z), on a square."""
+    ring = spec.leg.sole_radius - PAD_SPHERE_RADIUS
+    angles = np.pi / 4 + np.arange(PAD_SPHERES) * 2 * np.pi / PAD_SPHERES
+    return ring * np.stack([np.cos(angles), np.sin(angles)], axis=1)
 
 
 def magnet_name(leg: int) -> str:
@@ -126,15 +138,14 @@ def _add_leg(spec_mj, base, spec: RobotSpec, i: int) -> None:
         _hinge(body, f"leg{i}_ankle{k}", ANKLE_AXES[k], leg.ankle_lower[k], leg.ankle_upper[k],
                leg.ankle_damping, leg.ankle_stiffness)
         parent, pos = body, (0.0, 0.0, 0.0)
-    r = leg.sole_radius
     reach = ankle_to_sole(spec)
-    # a flat magnet pad: a cylinder whose axis is the foot axis (the foot body's x)
-    parent.add_geom(name=sole_name(i), type=mujoco.mjtGeom.mjGEOM_CYLINDER,
-                    size=[r, SOLE_HALF_THICKNESS, 0], pos=[reach - SOLE_HALF_THICKNESS, 0, 0],
-                    quat=[np.sqrt(0.5), 0.0, np.sqrt(0.5), 0.0], contype=ROBOT_BITS[0],
-                    conaffinity=ROBOT_BITS[1], friction=[spec.magnet.friction, 0.0, 0.0], condim=3,
-                    solref=list(SOLE_SOLREF), solimp=list(SOLE_SOLIMP), margin=SOLE_MARGIN)
-    _visual_capsule(parent, reach - 2 * SOLE_HALF_THICKNESS, 0.02)
+    for k, (y, z) in enumerate(pad_points(spec)):  # the magnet pad, facing along the foot x
+        parent.add_geom(name=sole_name(i, k), type=mujoco.mjtGeom.mjGEOM_SPHERE,
+                        size=[PAD_SPHERE_RADIUS, 0, 0], pos=[reach - PAD_SPHERE_RADIUS, y, z],
+                        contype=ROBOT_BITS[0], conaffinity=ROBOT_BITS[1],
+                        friction=[spec.magnet.friction, 0.0, 0.0], condim=3,
+                        solref=list(SOLE_SOLREF), solimp=list(SOLE_SOLIMP), margin=SOLE_MARGIN)
+    _visual_capsule(parent, reach - 2 * PAD_SPHERE_RADIUS, 0.02)
     for joint in JOINT_NAMES:
         _add_joint_servo(spec_mj, joint_name(i, joint), spec)
     magnet = spec_mj.add_actuator(name=magnet_name(i), target=foot_name(i),

@@ -50,7 +50,7 @@ class Physics(dm_mujoco.Physics):
         return r @ self.data.qvel[3:6]
 
     def sole_distances(self) -> np.ndarray:
-        return self.layout.sole_distances(self.model.ptr, self.data.ptr, 2 * self.contact_distance)
+        return self.layout.sole_distances(self.data.ptr)
 
     def contact_flags(self) -> np.ndarray:
         """The foot is in contact when its sole is within the spec's contact distance."""
