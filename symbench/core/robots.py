@@ -160,6 +160,10 @@ def _positive(value: Any, where: str) -> float:
     return x
 
 
+def _positives(table: dict, keys: tuple[str, ...], where: str) -> list[float]:
+    return [_positive(_get(table, k, where), f"{where} {k}") for k in keys]
+
+
 def _parse_leg(raw: dict, src: str) -> LegSpec:
     leg, ankle, stance = (_get(raw, k, src) for k in ("leg", "ankle", "stance"))
     w = f"{src} [leg]"
@@ -215,18 +219,18 @@ def parse_spec(raw: dict, source: str = "robot.toml") -> RobotSpec:
         mount_angles_deg=_floats(_get(mounts, "angles_deg", m), n_legs, m + " angles_deg"),
         coxa_yaw_deg=_floats(_get(mounts, "coxa_yaw_deg", m), n_legs, m + " coxa_yaw_deg"),
         leg=_parse_leg(raw, source),
-        magnet=MagnetSpec(*(_positive(_get(magnet, k, f"{source} [magnet]"), f"{source} magnet.{k}")
-                            for k in ("force", "friction", "contact_distance"))),
-        control=ControlSpec(*(_positive(_get(control, k, f"{source} [control]"), f"{source} control.{k}")
-                              for k in ("torque_limit", "kp", "kd", "timestep"))),
-        gait=GaitSpec(*(_positive(_get(gait, k, f"{source} [gait]"), f"{source} gait.{k}")
-                        for k in ("release", "swing", "touchdown", "swing_height", "step_length"))),
+        magnet=MagnetSpec(*_positives(magnet, ("force", "friction", "contact_distance"),
+                                      f"{source} [magnet]")),
+        control=ControlSpec(*_positives(control, ("torque_limit", "kp", "kd", "timestep"),
+                                        f"{source} [control]")),
+        gait=GaitSpec(*_positives(gait, ("release", "swing", "touchdown", "swing_height",
+                                         "step_length"), f"{source} [gait]")),
         symmetry_kind=str(_get(sym, "kind", f"{source} [symmetry]")),
         symmetry_shift=int(sym.get("shift", 1)),
         symmetry_mirror_offset=int(sym.get("mirror_offset", 0)),
         canonical=json.dumps(raw, sort_keys=True, separators=(",", ":")),
     )
-    spec.group  # noqa: B018 - raises a SymbenchError for a group the legs cannot carry
+    from_spec(n_legs, spec.symmetry_kind, spec.symmetry_shift, spec.symmetry_mirror_offset)
     angles = np.diff(np.unwrap(np.radians(spec.mount_angles_deg)))
     if n_legs > 1 and np.any(angles <= 0):
         raise SymbenchError(f"{m}: legs must be numbered counter-clockwise (increasing angles_deg)")

@@ -173,7 +173,8 @@ class WholeBodyController:
             T[6 + 3 * swing: 9 + 3 * swing, 6:9] = self._eye3
 
         # --- objective ---------------------------------------------------------------------
-        a_lin = tg.base_acc + g.base_kp * (tg.base_pos - data.qpos[:3]) + g.base_kd * (tg.base_vel - qvel[:3])
+        a_lin = (tg.base_acc + g.base_kp * (tg.base_pos - data.qpos[:3])
+                 + g.base_kd * (tg.base_vel - qvel[:3]))
         omega = r_base @ qvel[3:6]
         a_ang = g.base_kp * _vee_error(self.r_ref, r_base) - g.base_kd * omega
         H = self._h_base.copy()
@@ -181,7 +182,8 @@ class WholeBodyController:
         grad[:3] -= g.w_task * a_lin
         grad[3:6] -= g.w_task * (r_base.T @ a_ang)
         if swing >= 0:
-            ankle_ref = tg.sole_pos + (self.foot - (tg.phase[swing] == TOUCHDOWN) * PRESS) * self.normal
+            press = PRESS if tg.phase[swing] == TOUCHDOWN else 0.0
+            ankle_ref = tg.sole_pos + (self.foot - press) * self.normal
             a_sw = (tg.sole_acc + g.swing_kp * (ankle_ref - ankle[swing])
                     + g.swing_kd * (tg.sole_vel - ankle_vel[swing]))
             js = np.hstack([jb[swing], jl[swing]])  # (3, 9) on [base acc, swing joint acc]
@@ -218,7 +220,7 @@ class WholeBodyController:
         target = ankle.copy()
         target_vel = np.zeros((n, 3))
         if swing >= 0:
-            target[swing] = tg.sole_pos + (self.foot - (tg.phase[swing] == TOUCHDOWN) * PRESS) * self.normal
+            target[swing] = ankle_ref
             target_vel[swing] = tg.sole_vel
         rel = (target - tg.base_pos) @ self.r_ref  # base frame (reference pose)
         in_leg = np.einsum("nji,nj->ni", self.rot_bl, rel - self.org_bl)

@@ -1,9 +1,11 @@
 """The climbing task in dm-control's suite style: `Physics`, `ClimbTask`, `load(...)`.
 
-The action is the model's actuator vector, per leg [coxa, femur, tibia torque, magnet]
-(torques in N m within the limit, magnet 0..1); the agent that produces it here is the
-whole-body controller (symbench.core.sim.rollout). Observations are what the raw schema
-records: base pose and twist (world), joint states, per-foot contact and magnet.
+The action is the model's actuator vector, per leg [coxa, femur, tibia servo input u,
+magnet 0..1]. Each joint servo applies clip(u - Kp q - Kd qd) to its joint (see
+symbench.core.sim.model); the agent that acts here is the whole-body controller
+(symbench.core.sim.rollout), which sends u = tau_ff + Kp q_ref + Kd qd_ref. Observations
+are what the raw schema records: base pose and twist (world), joint states, per-foot
+contact and magnet.
 """
 
 from __future__ import annotations
@@ -63,7 +65,8 @@ class Physics(dm_mujoco.Physics):
 def make_physics(climb: Climb) -> Physics:
     model = compile_model(climb.spec, climb.arena)
     physics = Physics.from_model(wrapper.MjModel(model))
-    physics.bind_layout(ModelLayout.of(physics.model.ptr, climb.spec), climb.spec.magnet.contact_distance)
+    layout = ModelLayout.of(physics.model.ptr, climb.spec)
+    physics.bind_layout(layout, climb.spec.magnet.contact_distance)
     return physics
 
 
@@ -85,7 +88,7 @@ class ClimbTask(base.Task):
         data.qpos[lay.ankle_pitch] = ankle_pitch
         data.qvel[:3] = linvel
         data.qvel[3:6] = rot.T @ angvel
-        data.ctrl[:] = 0.0  # the controller engages the magnets over the first steps
+        data.ctrl[:] = 0.0  # magnets and servos wait for the first action
         super().initialize_episode(physics)
 
     def get_observation(self, physics: Physics) -> collections.OrderedDict:
