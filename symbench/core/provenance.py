@@ -5,6 +5,7 @@ from __future__ import annotations
 import os
 import platform
 import subprocess
+from collections.abc import Sequence
 from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
 
@@ -14,14 +15,21 @@ LIBRARIES = ("numpy", "torch", "jax", "jaxlib", "flax", "optax", "mujoco", "dm-c
              "proxsuite", "pandas", "pyarrow")
 
 
-def library_versions() -> dict[str, str]:
-    out = {"python": platform.python_version(), "symbench": __version__}
-    for lib in LIBRARIES:
+def package_versions(names: Sequence[str]) -> dict[str, str]:
+    """Installed version of each named distribution ('not installed' when absent)."""
+    out = {}
+    for name in names:
         try:
-            out[lib] = version(lib)
+            out[name] = version(name)
         except PackageNotFoundError:
-            out[lib] = "not installed"
+            out[name] = "not installed"
     return out
+
+
+def library_versions() -> dict[str, str]:
+    """Python, symbench and every library a result depends on."""
+    return {"python": platform.python_version(), "symbench": __version__,
+            **package_versions(LIBRARIES)}
 
 
 def hardware() -> dict[str, str | int | float]:

@@ -21,10 +21,11 @@ from typing import Any
 
 import numpy as np
 
+from symbench.core.atomic import write_bytes_atomic
 from symbench.core.data.columns import check_flags, legs_in, unflatten
 from symbench.core.data.dataset import Dataset, load_dataset
 from symbench.core.data.metadata import dataset_dir, library_versions, write_metadata
-from symbench.core.data.storage import (atomic_write_bytes, atomic_write_json, read_columns,
+from symbench.core.data.storage import (atomic_write_json, read_columns,
                                         read_json, read_trajectory, write_trajectory)
 from symbench.core.errors import SymbenchError
 from symbench.core.raw import COLUMN_NAMES, SCHEMA_VERSION, validate_raw
@@ -172,7 +173,7 @@ def export_dataset(dataset: Dataset, folder: Path, fmt: str = "parquet") -> Path
         else:
             buf = io.BytesIO()
             np.savez(buf, **arrays)
-            atomic_write_bytes(folder / name, buf.getvalue())
+            write_bytes_atomic(folder / name, buf.getvalue())
         scenario = {k: v for k, v in rec["scenario"].items() if k in SCENARIO_KEYS and v is not None}
         entries.append({"file": name, "scenario": scenario})
     atomic_write_json(folder / IMPORT_JSON, {

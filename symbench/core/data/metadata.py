@@ -8,12 +8,12 @@ the hash) identical when the same preset is generated twice on the same versions
 
 from __future__ import annotations
 
-from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
 from typing import Any
 
 from symbench.core.data.storage import atomic_write_json, canonical_json, read_json, sha256_bytes, sha256_file
 from symbench.core.errors import SymbenchError
+from symbench.core.provenance import package_versions
 from symbench.core.paths import datasets_dir
 
 FORMAT = "symbench-dataset"
@@ -23,13 +23,8 @@ VERSIONED = ("symbench", "mujoco", "dm-control", "numpy", "pyarrow")
 
 
 def library_versions() -> dict[str, str]:
-    out = {}
-    for name in VERSIONED:
-        try:
-            out[name] = version(name)
-        except PackageNotFoundError:
-            out[name] = "not installed"
-    return out
+    """The versions a dataset's bytes depend on (part of its content hash)."""
+    return package_versions(VERSIONED)
 
 
 def dataset_dir(dataset_id: str) -> Path:

@@ -10,30 +10,15 @@ from __future__ import annotations
 import hashlib
 import io
 import json
-import os
-import tempfile
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from symbench.core.atomic import write_bytes_atomic
 from symbench.core.data.columns import flatten, unflatten
 from symbench.core.errors import SymbenchError
-
-
-def atomic_write_bytes(path: Path, data: bytes) -> None:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "wb") as f:
-            f.write(data)
-            f.flush()
-            os.fsync(f.fileno())
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
 
 
 def canonical_json(obj: Any) -> str:
@@ -41,7 +26,7 @@ def canonical_json(obj: Any) -> str:
 
 
 def atomic_write_json(path: Path, obj: Any) -> None:
-    atomic_write_bytes(path, canonical_json(obj).encode())
+    write_bytes_atomic(path, canonical_json(obj).encode())
 
 
 def read_json(path: Path, what: str) -> Any:
@@ -82,7 +67,7 @@ def trajectory_bytes(arrays: Mapping[str, np.ndarray], n_legs: int) -> bytes:
 def write_trajectory(path: Path, arrays: Mapping[str, np.ndarray], n_legs: int) -> str:
     """Write atomically; return the file's SHA-256."""
     data = trajectory_bytes(arrays, n_legs)
-    atomic_write_bytes(path, data)
+    write_bytes_atomic(path, data)
     return sha256_bytes(data)
 
 
