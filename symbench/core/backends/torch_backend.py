@@ -1,8 +1,15 @@
 """PyTorch backend: `entry.build(dims, **hyper)` returns a `torch.nn.Module` whose
-`forward(**inputs)` maps normalized view inputs to normalized torques (N, n_legs, 3)."""
+`forward(**inputs)` maps normalized view inputs to normalized torques (N, n_legs, 3).
+
+Torch runs one intra-op thread unless SYMBENCH_TORCH_THREADS says otherwise: the benchmark's
+matrices (batch 64, latent 128) are too small to gain from threads, and on a 2-core machine
+shared with the simulator or other runs, two threads fighting for cores made training up to
+6 times slower (measured side by side: 3,951 vs 668 samples/s for sdnn on a loaded machine).
+"""
 
 from __future__ import annotations
 
+import os
 from typing import Any
 
 import numpy as np
@@ -13,6 +20,8 @@ from symbench.core.backends.checks import build_error, check_output, check_param
 from symbench.core.entries import ModelEntry
 from symbench.core.model_dims import ModelDims
 from symbench.core.normalization import TARGET_KEY, Normalizer
+
+torch.set_num_threads(int(os.environ.get("SYMBENCH_TORCH_THREADS", "1")))
 
 Params = dict[str, np.ndarray]
 EVAL_CHUNK = 8192
