@@ -24,12 +24,10 @@ from symbench.core.errors import SymbenchError
 from symbench.core.raw import validate_raw
 from symbench.core.scenario import Scenario
 from symbench.core.sim.controller import ControlOutput, WholeBodyController
+from symbench.core.sim.failure import detachment
 from symbench.core.sim.gait import STANCE, SWING
 from symbench.core.sim.model import SOLE_MARGIN
 from symbench.core.sim.setup import Climb
-
-COS_TILT_LIMIT = np.cos(np.radians(30.0))  # base normal vs surface normal: beyond, it fell
-
 
 @dataclass
 class Rollout:
@@ -101,7 +99,8 @@ def run_climb(climb: Climb, seconds: float, record_period: float = 0.006,
             data.ctrl[lay.motor] = out.command
             data.ctrl[lay.magnet] = out.magnet
             stats.update(out, data, lay, task.plan)
-            failure = _detached(out, contact, data, lay, normal, height0)
+            failure = detachment(out.targets.phase == STANCE, contact, data, lay.base_body,
+                                 normal, height0)
             if failure is not None:
                 failure = f"t={t:.3f} s: {failure}"
                 break
@@ -137,21 +136,6 @@ def run_climb(climb: Climb, seconds: float, record_period: float = 0.006,
                    real_time_factor=float(data.time) / wall if wall > 0 else float("inf"),
                    control_period=control_every * dt)
     return Rollout(arrays, failure is None, failure, metrics)
-
-
-def _detached(out: ControlOutput, contact: np.ndarray, data, lay, normal, height0) -> str | None:
-    if not np.isfinite(data.qacc).all():
-        return "the physics diverged (non-finite accelerations)"
-    lost = (out.targets.phase == STANCE) & ~contact
-    if lost.any():
-        return f"stance foot of leg(s) {', '.join(map(str, np.flatnonzero(lost)))} left the surface"
-    base_z = data.xmat[lay.base_body][2::3]  # third column of R_wb: the base normal
-    if base_z @ normal < COS_TILT_LIMIT:
-        return "base tilted more than 30 degrees from the surface normal"
-    height = data.qpos[:3] @ normal
-    if height < 0.3 * height0:
-        return f"base dropped to {height:.3f} m above the surface"
-    return None
 
 
 class _Stats:
