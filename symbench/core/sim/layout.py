@@ -12,7 +12,7 @@ import numpy as np
 
 from symbench.core.robots import JOINT_NAMES, RobotSpec
 from symbench.core.sim.model import (BASE, PAD_SPHERE_RADIUS, PAD_SPHERES, SURFACE, joint_name,
-                                     magnet_name, sole_name)
+                                     magnet_name, pad_sphere_name, sole_name)
 
 
 @dataclass(frozen=True)
@@ -25,7 +25,8 @@ class ModelLayout:
     magnet: np.ndarray  # (n,) actuator ids of the adhesion actuators
     ankle_pitch: np.ndarray  # (n,) qpos addresses of the first (pitch) gimbal joint
     ankle_body: np.ndarray  # (n,) body ids of the first gimbal link (origin = ankle)
-    sole_geom: np.ndarray  # (n, PAD_SPHERES) geom ids of each foot's pad spheres
+    sole_geom: np.ndarray  # (n,) geom ids of the pads' envelopes (disks, not colliders)
+    pad_geom: np.ndarray  # (n, PAD_SPHERES) geom ids of each pad's contact spheres
     surface_geom: int
     base_body: int
     reduced: np.ndarray  # (6 + 3n,) dofs the controller models: base, then actuated joints
@@ -55,17 +56,31 @@ class ModelLayout:
             ankle_pitch=model.jnt_qposadr[[jid(i, "ankle0") for i in range(n)]],
             ankle_body=np.array([mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, f"leg{i}_ankle0")
                                  for i in range(n)]),
-            sole_geom=np.array([[mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, sole_name(i, k))
-                                 for k in range(PAD_SPHERES)] for i in range(n)]),
+            sole_geom=np.array([mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, sole_name(i))
+                                for i in range(n)]),
+            pad_geom=np.array([[mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM,
+                                                  pad_sphere_name(i, k))
+                                for k in range(PAD_SPHERES)] for i in range(n)]),
             surface_geom=mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, SURFACE),
             base_body=base,
             reduced=np.concatenate([base_dof + np.arange(6), dof.reshape(-1)]),
         )
 
-    def sole_distances(self, data) -> np.ndarray:
-        """(n,) signed distance from each foot's pad to the climbing surface: the nearest pad
-        sphere's, from MuJoCo's geom poses (the sphere-plane distance MuJoCo's collision
-        uses: centre height above the plane minus the radius)."""
+    def _heights(self, data, geoms: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         normal = data.geom_xmat[self.surface_geom][2::3]  # the plane's z axis
-        height = (data.geom_xpos[self.sole_geom] - data.geom_xpos[self.surface_geom]) @ normal
+        return (data.geom_xpos[geoms] - data.geom_xpos[self.surface_geom]) @ normal, normal
+
+    def sole_distances(self, model, data) -> np.ndarray:
+        """(n,) distance from each pad's envelope (a disk around its contact spheres) to the
+        climbing surface, the exact cylinder-plane distance from MuJoCo's geom poses: a
+        foot is in contact when this is below the spec's 5 mm."""
+        height, normal = self._heights(data, self.sole_geom)
+        axis = np.abs(data.geom_xmat[self.sole_geom][:, 2::3] @ normal)  # disk axis vs normal
+        radius, half = model.geom_size[self.sole_geom, 0], model.geom_size[self.sole_geom, 1]
+        return height - half * axis - radius * np.sqrt(np.maximum(0.0, 1.0 - axis**2))
+
+    def pad_clearances(self, data) -> np.ndarray:
+        """(n,) distance from each pad's nearest contact sphere to the surface: the magnet
+        pulls (MuJoCo's adhesion acts) when this is within the sphere's contact margin."""
+        height, _ = self._heights(data, self.pad_geom)
         return height.min(axis=1) - PAD_SPHERE_RADIUS

@@ -38,6 +38,7 @@ SOLE_MARGIN = 0.002  # m
 # them keep the pad from rolling on the passive gimbal (a single sphere let ankles creep).
 PAD_SPHERES = 4
 PAD_SPHERE_RADIUS = 0.003  # m
+PAD_HALF_THICKNESS = 0.004  # m, of the pad's envelope (the disk the contact flag measures)
 
 
 def joint_name(leg: int, joint: str) -> str:
@@ -48,8 +49,14 @@ def foot_name(leg: int) -> str:
     return f"leg{leg}_foot"
 
 
-def sole_name(leg: int, k: int) -> str:
-    return f"leg{leg}_sole{k}"
+def sole_name(leg: int) -> str:
+    """The magnet pad's envelope (a disk, not a collider): contact is measured from it."""
+    return f"leg{leg}_sole"
+
+
+def pad_sphere_name(leg: int, k: int) -> str:
+    """One of the spheres that the pad touches the surface with."""
+    return f"leg{leg}_pad{k}"
 
 
 def pad_points(spec: RobotSpec) -> np.ndarray:
@@ -140,12 +147,17 @@ def _add_leg(spec_mj, base, spec: RobotSpec, i: int) -> None:
         parent, pos = body, (0.0, 0.0, 0.0)
     reach = ankle_to_sole(spec)
     for k, (y, z) in enumerate(pad_points(spec)):  # the magnet pad, facing along the foot x
-        parent.add_geom(name=sole_name(i, k), type=mujoco.mjtGeom.mjGEOM_SPHERE,
+        parent.add_geom(name=pad_sphere_name(i, k), type=mujoco.mjtGeom.mjGEOM_SPHERE,
                         size=[PAD_SPHERE_RADIUS, 0, 0], pos=[reach - PAD_SPHERE_RADIUS, y, z],
                         contype=ROBOT_BITS[0], conaffinity=ROBOT_BITS[1],
                         friction=[spec.magnet.friction, 0.0, 0.0], condim=3,
                         solref=list(SOLE_SOLREF), solimp=list(SOLE_SOLIMP), margin=SOLE_MARGIN)
-    _visual_capsule(parent, reach - 2 * PAD_SPHERE_RADIUS, 0.02)
+    # the pad's envelope: a disk whose axis is the foot axis, enclosing the spheres
+    parent.add_geom(name=sole_name(i), type=mujoco.mjtGeom.mjGEOM_CYLINDER,
+                    size=[spec.leg.sole_radius, PAD_HALF_THICKNESS, 0],
+                    pos=[reach - PAD_HALF_THICKNESS, 0, 0], quat=[np.sqrt(0.5), 0, np.sqrt(0.5), 0],
+                    contype=0, conaffinity=0, group=1)
+    _visual_capsule(parent, reach - 2 * PAD_HALF_THICKNESS, 0.02)
     for joint in JOINT_NAMES:
         _add_joint_servo(spec_mj, joint_name(i, joint), spec)
     magnet = spec_mj.add_actuator(name=magnet_name(i), target=foot_name(i),

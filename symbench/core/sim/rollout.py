@@ -95,7 +95,7 @@ def run_climb(climb: Climb, seconds: float, record_period: float = 0.006,
             distance = physics.sole_distances()
             contact = distance < spec.magnet.contact_distance
         if control:
-            out = controller(data, t, distance < SOLE_MARGIN)
+            out = controller(data, t, physics.pad_clearances() < SOLE_MARGIN)
             data.ctrl[lay.motor] = out.command
             data.ctrl[lay.magnet] = out.magnet
             stats.update(out, data, lay, task.plan)
