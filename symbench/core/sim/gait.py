@@ -6,7 +6,9 @@ segments (start -> raised mid point -> goal, zero velocity at both ends) and tou
 with the magnet on. Every step is `step_length` along the commanded direction; the base
 follows by step_length / n per slot (minimum-jerk), so feet stay within +-step/2 of their
 nominal place. Feet start staggered by their position in the order, so the first step is a
-full step too. All positions are world-frame; the base orientation reference is its start.
+full step too; a swing starts where the foot really stood (the controller passes it in), so
+landing errors never add up. All positions are world-frame; the base orientation reference
+is its start.
 """
 
 from __future__ import annotations
