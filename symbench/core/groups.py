@@ -110,6 +110,11 @@ class LegGroup:
         return len(self.elements)
 
     @property
+    def rotation_order(self) -> int:
+        """Number of pure rotations (the identity included): the sector is 360 / this degrees."""
+        return sum(1 for e in self.elements if not e.reflect)
+
+    @property
     def has_reflections(self) -> bool:
         return any(e.reflect for e in self.elements)
 

@@ -16,7 +16,7 @@ from typing import Any
 from symbench.core.errors import SymbenchError, UnknownNameError
 from symbench.core.scenario import Scenario
 
-DATASET_VERSION = 1
+DATASET_VERSION = 2  # 2: yaws beyond the first symmetry step carry the gait along (exact images)
 RECORD_PERIOD = 0.006  # s between recorded samples (the paper kept every 6th 1 kHz step)
 LEG_ORDERS = ("default", "reversed")
 
@@ -85,7 +85,7 @@ def preset(name: str) -> Preset:
 
 
 def dataset_id(robot: str, preset_name: str) -> str:
-    """e.g. hexa-climb-small-v1."""
+    """e.g. hexa-climb-small-v2."""
     preset(preset_name)
     return f"{robot}-climb-{preset_name}-v{DATASET_VERSION}"
 
@@ -100,7 +100,4 @@ def parse_dataset_id(dataset_id_: str) -> tuple[str, str] | None:
 
 def rotation_order(group) -> int:
     """Number of pure rotations in a LegGroup: the fundamental sector is 360 / this."""
-    order = sum(1 for g in group if not g.reflect)
-    if order < 1:
-        raise SymbenchError(f"group {group.name} has no rotations")
-    return order
+    return group.rotation_order

@@ -6,7 +6,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -35,9 +35,31 @@ class Climb:
 
     @classmethod
     def from_scenario(cls, scenario: Scenario, spec: RobotSpec | None = None) -> Climb:
+        """The climb of `scenario`, its gait carried along by the robot's rotation symmetry.
+
+        A yaw of k whole symmetry steps plus a remainder is the remainder's climb turned k
+        times (`turned`): the step direction turns back and the swing order is relabelled
+        with the legs, so scenarios whose yaws differ by a symmetry rotation are exact
+        symmetric images of each other (what the `unseen-rotation` split tests). Within the
+        first step the direction is the body frame's.
+        """
         spec = spec or load_robot(scenario.robot)
-        return cls(spec, Arena(scenario.inclination_deg, scenario.heading_deg), scenario.yaw_deg,
-                   scenario.direction_deg, scenario.leg_order, scenario.seed)
+        step = spec.symmetry_angle_deg
+        k = int(np.floor(round(scenario.yaw_deg % 360.0, 9) / step))
+        base = cls(spec, Arena(scenario.inclination_deg, scenario.heading_deg),
+                   scenario.yaw_deg - k * step, scenario.direction_deg, scenario.leg_order,
+                   scenario.seed)
+        return replace(base.turned(k), yaw_deg=scenario.yaw_deg)
+
+    def turned(self, steps: int = 1) -> Climb:
+        """The same climb with the base turned by `steps` symmetry steps and the legs
+        relabelled: the body direction turns back by the same angle (the same direction in
+        the world) and the leg order follows the labels."""
+        spec = self.spec
+        k, angle = spec.symmetry_shift * steps, spec.symmetry_angle_deg * steps
+        order = tuple((leg - k) % spec.n_legs for leg in self.leg_order)
+        return replace(self, yaw_deg=self.yaw_deg + angle,
+                       direction_deg=self.direction_deg - angle, order=order)
 
     @property
     def leg_order(self) -> tuple[int, ...]:

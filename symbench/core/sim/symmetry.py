@@ -8,8 +8,6 @@ by the same angle (the same direction in the world) with the leg order relabelle
 
 from __future__ import annotations
 
-from dataclasses import replace
-
 import numpy as np
 
 from symbench.core.sim.rollout import Rollout, run_climb
@@ -21,11 +19,7 @@ WORLD = ("base_pos", "base_linvel", "base_angvel", "base_linacc")
 
 def rotated_twin(climb: Climb) -> Climb:
     """The same climb with the base turned by one group step and the legs relabelled."""
-    spec = climb.spec
-    k, n, angle = spec.symmetry_shift, spec.n_legs, spec.symmetry_angle_deg
-    order = tuple((leg - k) % n for leg in climb.leg_order)
-    return replace(climb, yaw_deg=climb.yaw_deg + angle,
-                   direction_deg=climb.direction_deg - angle, order=order)
+    return climb.turned(1)
 
 
 def symmetry_error(climb: Climb, seconds: float) -> tuple[float, dict[str, float], Rollout]:
