@@ -20,6 +20,7 @@ import numpy as np
 
 from symbench.core.errors import SymbenchError
 from symbench.core.groups import LegGroup, from_spec
+from symbench.core.leg_symmetry import check_geometry
 
 JOINT_NAMES = ("coxa", "femur", "tibia")
 
@@ -230,10 +231,15 @@ def parse_spec(raw: dict, source: str = "robot.toml") -> RobotSpec:
         symmetry_mirror_offset=int(sym.get("mirror_offset", 0)),
         canonical=json.dumps(raw, sort_keys=True, separators=(",", ":")),
     )
-    from_spec(n_legs, spec.symmetry_kind, spec.symmetry_shift, spec.symmetry_mirror_offset)
+    group = from_spec(n_legs, spec.symmetry_kind, spec.symmetry_shift, spec.symmetry_mirror_offset)
     angles = np.diff(np.unwrap(np.radians(spec.mount_angles_deg)))
     if n_legs > 1 and np.any(angles <= 0):
         raise SymbenchError(f"{m}: legs must be numbered counter-clockwise (increasing angles_deg)")
+    check_geometry(spec.leg_rotations(), spec.leg_origins(), group, source)
+    in_plane = (spec.base_inertia[0] == spec.base_inertia[1], spec.base_semi_axes[0] == spec.base_semi_axes[1])
+    if group.rotation_order > 2 and not all(in_plane):
+        raise SymbenchError(f"{source}: a base with rotations of order {group.rotation_order} needs "
+                            "equal x and y base.inertia and base.semi_axes, or it breaks the symmetry")
     return spec
 
 

@@ -81,3 +81,27 @@ def test_scenario_round_trip_and_validation():
         Scenario("hexa", direction="up")
     with pytest.raises(SymbenchError, match="unknown field"):
         Scenario.from_dict({"robot": "hexa", "speed": 1})
+
+
+def _spec_variant(tmp_path, replacements: dict[str, str]):
+    from symbench.core.robots import load_spec
+    from symbench.plugins.robots import ROBOTS_DIR
+
+    text = (ROBOTS_DIR / "hexa" / "robot.toml").read_text()
+    for old, new in replacements.items():
+        assert old in text
+        text = text.replace(old, new)
+    (tmp_path / "robot.toml").write_text(text)
+    return lambda: load_spec(tmp_path)
+
+
+def test_a_spec_whose_legs_lack_the_declared_symmetry_is_refused(tmp_path):
+    load = _spec_variant(tmp_path, {"coxa_yaw_deg = [30.0,": "coxa_yaw_deg = [40.0,"})
+    with pytest.raises(SymbenchError, match="declares group C6, but .* not symmetric"):
+        load()
+
+
+def test_a_spec_whose_base_lacks_the_declared_symmetry_is_refused(tmp_path):
+    load = _spec_variant(tmp_path, {"inertia = [0.011005, 0.011005,": "inertia = [0.00834, 0.01367,"})
+    with pytest.raises(SymbenchError, match="equal x and y base.inertia"):
+        load()

@@ -15,30 +15,19 @@ from collections.abc import Mapping
 import numpy as np
 
 from symbench.core.data.frames import LegFrames, quat_multiply, yaw_matrix, yaw_quat
-from symbench.core.errors import SymbenchError
+from symbench.core import leg_symmetry
+from symbench.core.leg_symmetry import MIRROR_Y
 from symbench.core.groups import GroupElement
 from symbench.core.schema import FeatureType
 
-MIRROR_Y = np.diag([1.0, -1.0, 1.0])  # mirror in the x-z plane (a leg's, or the world's)
 JOINT_COLUMNS = ("q", "qd", "qdd", "tau")
 FLAG_COLUMNS = ("contact", "magnet")
 WORLD_VECTORS = ("base_pos", "base_linvel", "base_linacc")
 
 
 def base_map(frames: LegFrames, g: GroupElement, tol: float = 1e-9) -> np.ndarray:
-    """G_b (3, 3) with G_b R_b_li = R_b_l(perm i) S and G_b o_i = o_(perm i), S the leg mirror."""
-    if g.n_legs != frames.n_legs:
-        raise SymbenchError(f"{g!r} acts on {g.n_legs} legs, the robot has {frames.n_legs}")
-    s = MIRROR_Y if g.reflect else np.eye(3)
-    perm = list(g.perm)
-    rot, org = frames.rotations, frames.origins
-    gb = rot[perm[0]] @ s @ rot[0].T
-    frames_ok = np.allclose(gb @ rot, rot[perm] @ s, atol=tol)
-    origins_ok = np.allclose(org @ gb.T, org[perm], atol=tol)
-    if not (frames_ok and origins_ok and np.allclose(gb[:, 2], [0, 0, 1], atol=tol)):
-        raise SymbenchError(f"the robot's leg frames are not symmetric under {g!r}: "
-                            "check the mounts and coxa yaws of its robot.toml")
-    return gb
+    """What g does to the base; refused when the robot's legs lack that symmetry."""
+    return leg_symmetry.base_map(frames.rotations, frames.origins, g, tol)
 
 
 def act_on_raw(g: GroupElement, raw: Mapping[str, np.ndarray], frames: LegFrames
