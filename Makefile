@@ -19,7 +19,11 @@ test: $(STAMP)
 	$(VENV)/bin/python -m pytest -q -n 2
 
 test-slow: $(STAMP)
-	$(VENV)/bin/python -m pytest -q -m slow
+	$(VENV)/bin/python -m pytest -q -n 2 -m slow
+
+bench: $(STAMP)
+	$(VENV)/bin/symbench bench sim --robot hexa
+	$(VENV)/bin/symbench bench models
 
 clean:
 	rm -rf $(VENV)
