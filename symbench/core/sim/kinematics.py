@@ -28,11 +28,12 @@ def leg_ik(spec: RobotSpec, ankle: np.ndarray) -> np.ndarray:
     folded leg), so the controller never stops mid-step; the tracking error shows it.
     """
     lc, lf, lt = (spec.leg.lengths[k] for k in ("coxa", "femur", "tibia"))
-    q0 = np.arctan2(ankle[..., 1], ankle[..., 0])
-    reach = np.hypot(ankle[..., 0], ankle[..., 1]) - lc
-    height = ankle[..., 2]
-    d2 = reach**2 + height**2
-    cos_knee = (d2 - lf**2 - lt**2) / (2 * lf * lt)
-    q2 = -np.arccos(np.clip(cos_knee, -1.0, 1.0))  # negative: the tibia bends down
-    q1 = np.arctan2(height, reach) - np.arctan2(lt * np.sin(q2), lf + lt * np.cos(q2))
-    return np.stack([q0, q1, q2], axis=-1)
+    x, y, height = ankle[..., 0], ankle[..., 1], ankle[..., 2]
+    q = np.empty(ankle.shape)  # filled in place: this runs at every control step
+    q[..., 0] = np.arctan2(y, x)
+    reach = np.hypot(x, y) - lc
+    cos_knee = (reach * reach + height * height - (lf * lf + lt * lt)) / (2 * lf * lt)
+    q2 = q[..., 2]
+    np.negative(np.arccos(np.minimum(np.maximum(cos_knee, -1.0), 1.0)), out=q2)  # tibia bends down
+    q[..., 1] = np.arctan2(height, reach) - np.arctan2(lt * np.sin(q2), lf + lt * np.cos(q2))
+    return q
