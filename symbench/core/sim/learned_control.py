@@ -1,11 +1,12 @@
 """A learned inverse-dynamics model as the robot's controller, tracking a reference climb.
 
-Every record period (6 ms, the data's sample period) the model gets the measured state plus
-the reference's state one period later (the `next` variant's q_next, qd_next; the base
-acceleration and the magnets come from the reference too, as the desired motion) and its
-torques, clipped to the limits, are held until the next period: the paper's inverse-dynamics
-controller. Optionally a small PD term on the joint error is added (the paper's
-PD-augmented comparison). The magnets follow the reference's schedule.
+At every control step (the physics step, 1 kHz) the model gets the measured state plus the
+desired state one record period ahead (the `next` variant's q_next, qd_next, interpolated
+from the reference, which is sampled every record period like the training data); the base
+acceleration and the magnets come from the reference as the desired motion. Its torques,
+clipped to the limits, are applied: the paper's inverse-dynamics controller. Optionally a
+small PD term towards the same desired state is added (the paper's PD-augmented
+comparison).
 
 The joint servos of the simulated robot are cancelled (u = tau + Kp q + Kd qd), so the
 applied torque is the model's; only MuJoCo's implicit treatment of the servo damping
@@ -44,6 +45,14 @@ def _state_row(physics, contact: np.ndarray) -> dict[str, np.ndarray]:
             "qd": data.qvel[lay.dof].copy(), "contact": contact.astype(np.float64)}
 
 
+def _desired(reference: dict[str, np.ndarray], t: float, period: float) -> dict[str, np.ndarray]:
+    """q and qd of the reference at time t (linear between its samples)."""
+    s = t / period
+    k = min(int(s), len(reference["t"]) - 2)
+    a = s - k
+    return {c: (1 - a) * reference[c][k] + a * reference[c][k + 1] for c in ("q", "qd")}
+
+
 def track(scenario: Scenario, reference: dict[str, np.ndarray], policy: Policy,
           pd_gains: tuple[float, float] = (0.0, 0.0)) -> Tracking:
     """Run `policy` on `scenario` against `reference` (raw columns every record period)."""
@@ -55,38 +64,37 @@ def track(scenario: Scenario, reference: dict[str, np.ndarray], policy: Policy,
     climb = Climb.from_scenario(scenario)
     n_rows = len(reference["t"])
     period = float(reference["t"][1] - reference["t"][0])
-    env = load_climb(climb, time_limit=period * n_rows + 1.0)
+    duration = period * (n_rows - 2)  # the desired state one period ahead must exist
+    env = load_climb(climb, time_limit=duration + 1.0)
     env.reset()
     physics, task = env.physics, env.task
     model, data, lay = physics.model.ptr, physics.data.ptr, physics.layout
     spec = climb.spec
-    every = int(round(period / model.opt.timestep))
     kp, kd, limit = spec.control.kp, spec.control.kd, spec.control.torque_limit
     pd_p, pd_d = pd_gains
     normal, height0 = task.plan.normal, float(task.plan.base_start @ task.plan.normal)
-    errors, failure, k = [], None, 0
-    for k in range(n_rows - 1):
+    errors, failure = [], None
+    for _ in range(int(round(duration / model.opt.timestep))):
+        k = int(data.time / period + 1e-9)  # the reference sample now
         contact = physics.sole_distances() < spec.magnet.contact_distance
-        stance = reference["magnet"][k] > 0.5
-        failure = detachment(stance, contact, data, lay.base_body, normal, height0)
+        failure = detachment(reference["magnet"][k] > 0.5, contact, data, lay.base_body,
+                             normal, height0)
         if failure is not None:
             break
         now = _state_row(physics, contact)
-        errors.append(now["q"] - reference["q"][k])
+        errors.append(now["q"] - _desired(reference, data.time, period)["q"])
+        target = _desired(reference, data.time + period, period)
         # measured state now; what is not measured (base acceleration, qdd, magnets) is the
-        # desired motion, taken from the reference, like the reference's next state
-        rows = {c: np.stack([now[c] if c in now else reference[c][k], reference[c][k + 1]])
+        # desired motion from the reference, like the desired state one period ahead
+        rows = {c: np.stack([now[c] if c in now else reference[c][k], target.get(c, reference[c][k + 1])])
                 for c in reference}
-        tau_model = np.asarray(policy(rows), dtype=np.float64)
+        q, qd = now["q"], now["qd"]
+        tau = np.asarray(policy(rows), dtype=np.float64)
+        tau = np.clip(tau + pd_p * (target["q"] - q) + pd_d * (target["qd"] - qd), -limit, limit)
         data.ctrl[lay.magnet] = reference["magnet"][k]
-        q_ref, qd_ref = reference["q"][k + 1], reference["qd"][k + 1]
-        for _ in range(every):
-            q, qd = data.qpos[lay.qpos], data.qvel[lay.dof]
-            tau = np.clip(tau_model + pd_p * (q_ref - q) + pd_d * (qd_ref - qd), -limit, limit)
-            data.ctrl[lay.motor] = tau + kp * q + kd * qd
-            mujoco.mj_step2(model, data)
-            mujoco.mj_step1(model, data)
-    duration = period * (n_rows - 1)
-    held = k * period if failure is not None else duration
+        data.ctrl[lay.motor] = tau + kp * q + kd * qd
+        mujoco.mj_step2(model, data)
+        mujoco.mj_step1(model, data)
+    held = float(data.time) if failure is not None else duration
     rmse = float(np.sqrt(np.mean(np.square(errors)))) if errors else float("nan")
     return Tracking(failure is None, failure, held, rmse, len(errors))
