@@ -50,8 +50,8 @@ def metrics_table(record: ResultRecord) -> Table:
     table.add_column("value", justify="right")
     for evaluator, metrics in record.metrics.items():
         for name, value in metrics.items():
-            if isinstance(value, (int, float)) and not isinstance(value, bool):
-                table.add_row(evaluator, name, f"{value:.4g}")
-            elif isinstance(value, bool):
+            if isinstance(value, bool):
                 table.add_row(evaluator, name, str(value))
+            elif isinstance(value, (int, float)):
+                table.add_row(evaluator, name, f"{value:.4g}")
     return table
