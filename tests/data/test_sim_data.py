@@ -158,7 +158,7 @@ def test_ctrl_c_during_generation_keeps_finished_work_and_resumes(tmp_path):
     proc = subprocess.Popen(command, env=env, start_new_session=True, stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT,
                             preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
-    folder = tmp_path / "datasets" / "magneto-climb-small-v2" / "records"
+    folder = tmp_path / "datasets" / "magneto-climb-small-v3" / "records"
     while not folder.is_dir() or len(list(folder.glob("*.json"))) < 3:
         time.sleep(0.2)
     os.killpg(proc.pid, signal.SIGINT)

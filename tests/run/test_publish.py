@@ -17,7 +17,7 @@ def write(path, record):
 
 @pytest.fixture
 def smoke_hash(smoke_home, tmp_path):
-    return standard_hash("hexa-climb-smoke-v2", tmp_path)
+    return standard_hash("hexa-climb-smoke-v3", tmp_path)
 
 
 def test_three_seeds_on_the_standard_dataset_are_published(smoke_hash, make_record, tmp_path):

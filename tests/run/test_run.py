@@ -22,7 +22,7 @@ def test_every_model_on_every_robot_writes_a_valid_record(smoke_home, tmp_path, 
                    output=tmp_path, progress=False, max_epochs=2)
     record = run(spec)
     assert read_record(spec.record_path) == record
-    assert record.dataset.id == f"{robot}-climb-smoke-v2"
+    assert record.dataset.id == f"{robot}-climb-smoke-v3"
     assert record.samples.train > 0 and record.samples.test > 0
     assert record.model.parameters > 0
     metrics = record.metrics
