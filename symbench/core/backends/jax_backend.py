@@ -3,11 +3,18 @@
 
 Training runs a whole epoch as one jitted `lax.scan` over batches (or, uncompiled, one
 jitted call per batch); float64 predictions run under `jax.enable_x64`.
+
+CPU computations run inline in the calling thread unless JAX_CPU_ENABLE_ASYNC_DISPATCH says
+otherwise: handing a batch-1 prediction to a worker thread and waiting for it doubled the
+control-loop latency on the shared 2-core machine (sdnn on hexa: 60 -> 32 us), and training
+dispatches one jitted scan per epoch, so it has nothing to overlap. The setting takes effect
+when JAX creates its CPU client, i.e. when this module is imported before any JAX computation.
 """
 
 from __future__ import annotations
 
 import contextlib
+import os
 from collections.abc import Callable
 from functools import partial
 from typing import Any
@@ -23,6 +30,9 @@ from symbench.core.backends.checks import build_error, check_output, check_param
 from symbench.core.entries import ModelEntry
 from symbench.core.model_dims import ModelDims
 from symbench.core.normalization import TARGET_KEY, Normalizer
+
+if "JAX_CPU_ENABLE_ASYNC_DISPATCH" not in os.environ:
+    jax.config.update("jax_cpu_enable_async_dispatch", False)
 
 Params = dict[str, np.ndarray]
 EVAL_CHUNK = 8192
