@@ -153,6 +153,7 @@ class WholeBodyController:
         self._H = self._h_base.copy()
         self._grad = np.zeros(nx)
         self._ik_damping = IK_DAMPING**2 * np.eye(3)
+        self._target_vel = np.zeros((n, 3))
 
     def _ankle_jacobians(self, data, ankle: np.ndarray, r_base: np.ndarray) -> np.ndarray:
         """World-frame ankle Jacobians (n, 3, 9): columns 0-5 w.r.t. the free joint
@@ -263,7 +264,8 @@ class WholeBodyController:
 
         # --- joint references and feedback -------------------------------------------------
         target = ankle.copy()
-        target_vel = np.broadcast_to(-tg.base_vel, (n, 3)).copy()
+        target_vel = self._target_vel
+        np.negative(tg.base_vel, out=target_vel[:])
         if swing >= 0:
             target[swing] = ankle_ref
             target_vel[swing] += tg.sole_vel
@@ -273,5 +275,5 @@ class WholeBodyController:
         # velocity references by damped least squares (safe at a stretched leg), world frame
         qd_ref = (inverses[n:] @ (target_vel[:, None, :] @ jl).swapaxes(1, 2))[..., 0]
         command = tau_ff + self.kp * q_ref + self.kd * qd_ref
-        tau = np.clip(command - self.kp * q - self.kd * qd, -self.limit, self.limit)
+        tau = np.minimum(np.maximum(command - self.kp * q - self.kd * qd, -self.limit), self.limit)
         return ControlOutput(command, tau, tg.magnet, tg)

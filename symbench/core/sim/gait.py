@@ -56,7 +56,7 @@ def hermite(p0, v0, p1, v1, u: float, duration: float) -> tuple[np.ndarray, np.n
         [(6 * u2 - 6 * u) / T, (3 * u2 - 4 * u + 1) / T, (-6 * u2 + 6 * u) / T, (3 * u2 - 2 * u) / T],
         [(12 * u - 6) / T**2, (6 * u - 4) / T**2, (-12 * u + 6) / T**2, (6 * u - 2) / T**2],
     ])
-    pos, vel, acc = basis @ np.stack([p0, T * v0, p1, T * v1])
+    pos, vel, acc = basis @ np.array([p0, T * v0, p1, T * v1])
     return pos, vel, acc
 
 

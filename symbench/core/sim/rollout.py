@@ -92,10 +92,10 @@ def run_climb(climb: Climb, seconds: float, record_period: float = 0.006,
         t = data.time
         control, row = step % control_every == 0, rec.rows if step % every == 0 else -1
         if control or row >= 0:
-            distance = physics.sole_distances()
+            distance = lay.sole_distances(model, data)
             contact = distance < spec.magnet.contact_distance
         if control:
-            out = controller(data, t, physics.pad_clearances() < SOLE_MARGIN)
+            out = controller(data, t, lay.pad_clearances(data) < SOLE_MARGIN)
             data.ctrl[lay.motor] = out.command
             data.ctrl[lay.magnet] = out.magnet
             stats.update(out, data, lay, task.plan)
