@@ -13,7 +13,6 @@ step, which excludes gravity. Rows are kept every `record_period` seconds.
 
 from __future__ import annotations
 
-import math
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -86,7 +85,7 @@ def run_climb(climb: Climb, seconds: float, record_period: float = 0.006,
     normal, height0 = task.plan.normal, float(task.plan.base_start @ task.plan.normal)
     kp, kd, limit = spec.control.kp, spec.control.kd, spec.control.torque_limit
     failure = None
-    stats = _Stats()
+    stats = _Stats(-(-n_steps // control_every), spec.n_legs)
     wall = time.perf_counter()
     for step in range(n_steps):
         t = data.time
@@ -139,33 +138,39 @@ def run_climb(climb: Climb, seconds: float, record_period: float = 0.006,
 
 
 class _Stats:
-    """Running tracking errors and torque peaks, for `symbench sim check`."""
+    """Tracking errors and torque peaks, for `symbench sim check`: the loop only stores
+    rows (a few copies per control step), the errors are computed once at the end."""
 
-    def __init__(self):
-        self.base_err = []
-        self.swing_err = []
-        self.peak_tau = np.zeros(3)
-        self.clipped = 0
-        self.torques = 0
+    def __init__(self, n_rows: int, n_legs: int):
+        self.base = np.zeros((n_rows, 2, 3))  # planned and measured base position
+        self.swing = np.full((n_rows, 2, 3), np.nan)  # swing ankle target and position
+        self.tau = np.zeros((n_rows, n_legs, 3))
+        self.rows = 0
         self.start = None
 
     def update(self, out: ControlOutput, data, lay, plan) -> None:
+        row = self.rows
         if self.start is None:
             self.start = data.qpos[:3].copy()
         tg = out.targets
-        self.base_err.append(math.dist(tg.base_pos, data.qpos[:3]))
+        self.base[row, 0] = tg.base_pos
+        self.base[row, 1] = data.qpos[:3]
         if tg.step_leg >= 0 and tg.phase[tg.step_leg] == SWING:
-            ankle = data.xpos[lay.ankle_body[tg.step_leg]]
-            target = tg.sole_pos + plan.spec.leg.lengths["foot"] * plan.normal
-            self.swing_err.append(math.dist(target, ankle))
-        magnitude = np.abs(out.tau)
-        np.maximum(self.peak_tau, magnitude.max(axis=0), out=self.peak_tau)
-        self.clipped += int(np.count_nonzero(magnitude >= plan.spec.control.torque_limit - 1e-9))
-        self.torques += magnitude.size
+            self.swing[row, 0] = tg.sole_pos
+            self.swing[row, 1] = data.xpos[lay.ankle_body[tg.step_leg]]
+        self.tau[row] = out.tau
+        self.rows += 1
 
     def summary(self, spec, data, plan) -> dict[str, float]:
-        base = np.asarray(self.base_err)
-        swing = np.asarray(self.swing_err) if self.swing_err else np.zeros(1)
+        rows = self.rows
+        base = np.linalg.norm(self.base[:rows, 0] - self.base[:rows, 1], axis=1)
+        swinging = self.swing[:rows]
+        swinging = swinging[~np.isnan(swinging[:, 0, 0])]
+        target = swinging[:, 0] + spec.leg.lengths["foot"] * plan.normal
+        swing = np.linalg.norm(target - swinging[:, 1], axis=1) if len(swinging) else np.zeros(1)
+        magnitude = np.abs(self.tau[:rows])
+        peak = magnitude.max(axis=(0, 1))
+        clipped = int(np.count_nonzero(magnitude >= spec.control.torque_limit - 1e-9))
         walked = float((data.qpos[:3] - self.start) @ plan.direction)
         return {
             "distance_walked": walked,
@@ -173,11 +178,11 @@ class _Stats:
             "base_error_max": float(base.max()),
             "swing_error_rms": float(np.sqrt(np.mean(swing**2))),
             "swing_error_max": float(swing.max()),
-            "peak_torque_coxa": float(self.peak_tau[0]),
-            "peak_torque_femur": float(self.peak_tau[1]),
-            "peak_torque_tibia": float(self.peak_tau[2]),
+            "peak_torque_coxa": float(peak[0]),
+            "peak_torque_femur": float(peak[1]),
+            "peak_torque_tibia": float(peak[2]),
             "torque_limit": float(spec.control.torque_limit),
-            "clipped_fraction": self.clipped / max(self.torques, 1),
+            "clipped_fraction": clipped / max(magnitude.size, 1),
         }
 
 
