@@ -146,13 +146,14 @@ class WholeBodyController:
         k3 = np.arange(3)
         self._tau_rows = (5 * n + 3 * self._legs[:, None, None] + k3[None, :, None]) + 0 * k3
         self._tau_cols = (9 + 3 * self._legs[:, None, None] + k3[None, None, :]) + 0 * k3[:, None]
-        self._force_diag = np.arange(9, nx)
+        self._force_diag = np.arange(9, nx) * (nx + 1)  # flat indices of H's force diagonal
         self._h_base = np.zeros((nx, nx))  # the constant part of the Hessian
         self._h_base[:9, :9] = g.w_qdd * np.eye(9)
         self._h_base[:6, :6] += g.w_task * np.eye(6)  # |R a| = |a|: R is orthogonal
         self._H = self._h_base.copy()
         self._grad = np.zeros(nx)
-        self._ik_damping = IK_DAMPING**2 * np.eye(3)
+        self._eye3 = np.eye(3)
+        self._ik_damping = IK_DAMPING**2 * self._eye3
         self._target_vel = np.zeros((n, 3))
 
     def _ankle_jacobians(self, data, ankle: np.ndarray, r_base: np.ndarray) -> np.ndarray:
@@ -215,7 +216,7 @@ class WholeBodyController:
         T_legs[:, :, 6:9] = 0.0
         c[6:] = follow[:, :, 6].reshape(-1)
         if swing >= 0:
-            T_legs[swing, :, 6:9] = np.eye(3)
+            T_legs[swing, :, 6:9] = self._eye3
 
         # --- objective ---------------------------------------------------------------------
         a_lin = (tg.base_acc + g.base_kp * (tg.base_pos - qpos[:3])
@@ -235,8 +236,8 @@ class WholeBodyController:
             js = jac[swing]  # (3, 9) on [base acc, swing joint acc]
             H[:9, :9] += g.w_task * (js.T @ js)
             grad[:9] -= g.w_task * (js.T @ a_sw)
-        force_w = np.where(phase == RELEASE, g.w_release, g.w_force)
-        H[self._force_diag, self._force_diag] += np.repeat(force_w, 3)
+        H.reshape(-1)[self._force_diag] += np.where(phase == RELEASE, g.w_release,
+                                                    g.w_force).repeat(3)
 
         # --- dynamics: M_r (T x + c) + h_r = S'tau + sum J_i' f_i -------------------------
         mt = m_r @ T
@@ -270,7 +271,7 @@ class WholeBodyController:
             target[swing] = ankle_ref
             target_vel[swing] += tg.sole_vel
         rel = (target - tg.base_pos) @ self.r_ref  # base frame (reference pose)
-        in_leg = np.einsum("nji,nj->ni", self.rot_bl, rel - self.org_bl)
+        in_leg = ((rel - self.org_bl)[:, None, :] @ self.rot_bl)[:, 0]  # R_bl' (rel - o)
         q_ref = leg_ik(self.spec, in_leg)
         # velocity references by damped least squares (safe at a stretched leg), world frame
         qd_ref = (inverses[n:] @ (target_vel[:, None, :] @ jl).swapaxes(1, 2))[..., 0]
