@@ -148,3 +148,18 @@ def test_a_changed_robot_spec_is_noticed_and_ensure_dataset_rebuilds(smoke_hexa,
     rebuilt = generation.ensure_dataset("hexa", "smoke", workers=1, show_progress=False)
     assert rebuilt.metadata["robot_spec_hash"] == "an edited robot.toml"
     assert rebuilt.view("leg_grouped", "acc").n_legs == 6
+
+
+def test_a_stand_in_simulator_runs_in_process_even_after_proxsuite_loaded(home, monkeypatch):
+    """Whether proxsuite's (non-portable) build is already loaded must not send a stand-in
+    simulator, which cannot be pickled, to a worker process."""
+    import sys
+    import types
+
+    from symbench.core.data import determinism, generation
+
+    monkeypatch.setitem(sys.modules, "proxsuite", types.SimpleNamespace(_submodule=None))
+    assert not determinism.portable_qp_in_process()
+    monkeypatch.setattr(generation, "default_simulator",
+                        lambda: lambda s, record_period: fake_simulate(s, record_period))
+    assert generation.ensure_dataset("hexa", "smoke", workers=1, show_progress=False).n_legs == 6

@@ -66,6 +66,13 @@ def default_simulator() -> Simulator:
     return simulate
 
 
+def _is_real_simulator(sim: Simulator) -> bool:
+    """Only the real simulator's QP build decides reproducibility (named, not imported, so
+    that asking does not load proxsuite)."""
+    return f"{getattr(sim, '__module__', '')}.{getattr(sim, '__qualname__', '')}" == \
+        "symbench.core.sim.rollout.simulate"
+
+
 def record_path(root: Path, index: int) -> Path:
     return root / "records" / f"{index:05d}.json"
 
@@ -153,7 +160,7 @@ def generate(robot: str, preset_name: str = "small", workers: int = 1,
            "record_period_s": RECORD_PERIOD, "versions": library_versions()}
     sim = simulator or default_simulator()
     # the real simulator runs in this process only if its QP build here is reproducible
-    in_process = workers <= 1 and (simulator is not None or portable_qp_in_process())
+    in_process = workers <= 1 and (not _is_real_simulator(sim) or portable_qp_in_process())
     tasks = [Task(i, s.to_dict(), root, spec.n_legs, key, sim) for i, s in enumerate(scenarios)]
     records: dict[int, dict[str, Any]] = {}
     for task in tasks:
