@@ -10,6 +10,7 @@ had never stopped.
 
 from __future__ import annotations
 
+import hashlib
 import math
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
@@ -89,7 +90,7 @@ def train(entry: ModelEntry, train: ViewArrays, val: ViewArrays, config: TrainCo
     backend = get_backend(entry.backend)
     compiled = backend.default_compiled if config.compile is None else config.compile
     lr = config.learning_rate or entry.learning_rate
-    identity = _identity(entry, dims, config, len(train), len(val))
+    identity = _identity(entry, dims, config, train, val)
     params = backend.init_params(entry, dims, config.hyper, config.seed)
     trainer = backend.make_trainer(entry, dims, config.hyper, params, lr, compiled)
     trainer.set_data(normalizer.normalize_inputs(train.inputs), normalizer.normalize("target", train.target),
@@ -152,12 +153,23 @@ def _check_data(entry: ModelEntry, train: ViewArrays, val: ViewArrays) -> ModelD
     return dims
 
 
-def _identity(entry: ModelEntry, dims: ModelDims, config: TrainConfig, n_train: int,
-              n_val: int) -> dict[str, Any]:
-    """What a resume checkpoint must match: the same model, data sizes and protocol."""
+def _identity(entry: ModelEntry, dims: ModelDims, config: TrainConfig, train: ViewArrays,
+              val: ViewArrays) -> dict[str, Any]:
+    """What a resume checkpoint must match: the same model, protocol and data (by content,
+    so a regenerated dataset of the same size does not resume an old training)."""
     cfg = {k: v for k, v in config.to_dict().items() if k not in ("max_epochs", "progress")}
-    return {"model": entry.name, "backend": entry.backend, "dims": dims.to_dict(),
-            "config": cfg, "n_train": n_train, "n_val": n_val}
+    return {"model": entry.name, "backend": entry.backend, "variant": entry.variant,
+            "dims": dims.to_dict(), "config": cfg, "n_train": len(train), "n_val": len(val),
+            "data_sha256": _fingerprint(train, val)}
+
+
+def _fingerprint(*parts: ViewArrays) -> str:
+    digest = hashlib.sha256()
+    for arrays in parts:
+        for key in sorted(arrays.inputs):
+            digest.update(np.ascontiguousarray(arrays.inputs[key]).tobytes())
+        digest.update(np.ascontiguousarray(arrays.target).tobytes())
+    return digest.hexdigest()
 
 
 def _save_resume(folder: Path, identity: dict, state: _Progress, trainer: Any,

@@ -56,6 +56,16 @@ def test_resume_refuses_a_checkpoint_of_another_configuration(smoke, tmp_path):
         train(entry, tr, va, TrainConfig(max_epochs=1, seed=1, hyper=SMALL["sdnn"], progress=False), tmp_path)
 
 
+def test_resume_refuses_a_checkpoint_of_other_data_of_the_same_size(smoke, tmp_path):
+    entry = registry.model("sdnn", "torch")
+    config = TrainConfig(max_epochs=1, hyper=SMALL["sdnn"], progress=False)
+    tr, va = (s["leg_grouped"].take(np.arange(128)) for s in smoke)
+    train(entry, tr, va, config, tmp_path)
+    other = tr.take(np.arange(128)[::-1])  # same samples, another order: other data
+    with pytest.raises(SymbenchError, match="another model, data or configuration"):
+        train(entry, other, va, config, tmp_path)
+
+
 @pytest.mark.parametrize("ratio, patience, epochs", [(1e9, 3, 3), (0.0, 3, 5)])
 def test_stopping_rule(ratio, patience, epochs, smoke):
     """ratio x val > train every epoch: stop after `patience` epochs; never: run to the cap."""
