@@ -101,7 +101,8 @@ def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> 
     dataset = timer.measure("dataset_s", ensure_dataset, spec)
     config = TrainConfig(seed=spec.seed, max_epochs=spec.max_epochs or MAX_EPOCHS[spec.preset],
                          progress=spec.progress)
-    checkpoints = spec.output / "checkpoints" / spec.key()
+    # per dataset version, so a regenerated dataset trains afresh instead of resuming
+    checkpoints = spec.output / "checkpoints" / spec.key() / dataset.content_hash[:12]
 
     def train_on(split: str, variant: str):
         model_of = replace(entry, variant=variant)
