@@ -57,7 +57,7 @@ class EvaluationContext:
         return self.dataset.spec
 
     def predictions(self) -> np.ndarray:
-        return self.on_split(self.split).predict(self.test.inputs)
+        return self.predict(self.test.inputs)
 
     def on_split(self, split: str, variant: str | None = None) -> TrainedOnSplit:
         """This run's model for its own split and variant; a retrained one (cached) otherwise."""
@@ -86,10 +86,12 @@ def rmse(pred: np.ndarray, target: np.ndarray, axis: Any = None) -> np.ndarray:
     return np.sqrt(np.mean((np.asarray(pred) - np.asarray(target)) ** 2, axis=axis))
 
 
-def relative_change(a: np.ndarray, b: np.ndarray) -> float:
-    """max |a - b| / max |b|: how far two torque predictions differ, relative to their size."""
-    scale = float(np.max(np.abs(b)))
-    return float(np.max(np.abs(a - b)) / scale) if scale > 0 else float(np.max(np.abs(a - b)))
+def relative_error(actual: np.ndarray, expected: np.ndarray) -> float:
+    """max |actual - expected| / max |expected|: how far two torque predictions differ,
+    relative to their size (the equivariance kit and the evaluators share it)."""
+    actual, expected = np.asarray(actual), np.asarray(expected)
+    scale = float(np.max(np.abs(expected))) if expected.size else 0.0
+    return float(np.max(np.abs(actual - expected))) / max(scale, np.finfo(np.float64).tiny)
 
 
 def run_evaluators(names: list[str], context: EvaluationContext,

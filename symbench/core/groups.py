@@ -59,6 +59,16 @@ class GroupElement:
         p[list(self.perm), list(range(self.n_legs))] = 1.0
         return p
 
+    @property
+    def name(self) -> str:
+        """'identity', 'shift k' (a rotation by k legs), 'mirror k' (legs i -> k - i), else the perm."""
+        n, k = self.n_legs, self.perm[0]
+        if not self.reflect and all(p == (i + k) % n for i, p in enumerate(self.perm)):
+            return "identity" if k == 0 else f"shift {k}"
+        if self.reflect and all(p == (k - i) % n for i, p in enumerate(self.perm)):
+            return f"mirror {k}"
+        return str(self.perm)
+
     def __repr__(self) -> str:
         return self.label or f"GroupElement(perm={self.perm}, reflect={self.reflect})"
 

@@ -34,28 +34,25 @@ COLUMNS = {
 
 
 def load_records(folder: Path) -> list[tuple[Path, ResultRecord]]:
-    """Every *.json record below `folder`, validated; sorted by path for reproducibility."""
-    paths = sorted(Path(folder).rglob("*.json"))
+    """Every *.json record in `folder` (not its subfolders, which hold checkpoints),
+    validated; sorted by path for reproducibility."""
+    paths = sorted(Path(folder).glob("*.json"))
     if not paths:
         raise SymbenchError(f"no result records (*.json) under {folder}")
     return [(p, read_record(p)) for p in paths]
 
 
 def check_consistent(records: Iterable[tuple[Path, ResultRecord]]) -> None:
-    """One dataset content hash per robot and one schema version overall, or an error."""
+    """One dataset content hash per robot, or an error (`read_record` already refuses a
+    foreign schema version)."""
     hashes: dict[str, dict[str, Path]] = defaultdict(dict)
-    versions: dict[int, Path] = {}
     for path, r in records:
         hashes[r.robot].setdefault(r.dataset.content_hash, path)
-        versions.setdefault(r.schema_version, path)
     for robot, by_hash in hashes.items():
         if len(by_hash) > 1:
             examples = ", ".join(f"{p.name} ({h[:12]}...)" for h, p in by_hash.items())
             raise SymbenchError(f"records for {robot} come from {len(by_hash)} different datasets "
                                 f"({examples}); aggregate records of one dataset version only")
-    if len(versions) > 1:
-        raise SymbenchError("records mix schema versions "
-                            + ", ".join(f"{v} ({p.name})" for v, p in versions.items()))
 
 
 def _flat(record: ResultRecord) -> dict:
@@ -78,6 +75,11 @@ def aggregate(records: list[tuple[Path, ResultRecord]]) -> pd.DataFrame:
         raise SymbenchError(f"two records for the same run: {first['robot']} {first['split']} "
                             f"{first['model']} {first['backend']} seed {first['seed']}")
     keys = ["robot", "split", "model", "variant", "backend"]
+    missing = runs.rmse_Nm.isna()
+    if missing.any():
+        names = ", ".join(sorted(str(p.name) for (p, _), m in zip(records, missing) if m)[:5])
+        raise SymbenchError(f"records without a torque-error RMSE cannot be ranked ({names}); "
+                            "run them with the torque-error evaluator")
     metrics = [c for c in COLUMNS.values() if runs[c].notna().any()]
     grouped = runs.groupby(keys, sort=True)
     table = grouped.agg(seeds=("seed", "nunique"), parameters=("parameters", "first"),

@@ -9,7 +9,7 @@ import click
 
 @click.command("leaderboard")
 @click.option("--results", type=click.Path(path_type=Path), default=Path("results"),
-              show_default=True, help="Folder of result records (searched recursively).")
+              show_default=True, help="Folder holding the result records (*.json).")
 @click.option("--out", type=click.Path(path_type=Path), default=Path("leaderboards"),
               show_default=True, help="Where the Markdown, CSV and PNG files go.")
 def leaderboard(results: Path, out: Path) -> None:

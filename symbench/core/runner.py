@@ -132,7 +132,7 @@ def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> 
         model={"name": entry.name, "backend": entry.backend, "view": entry.view,
                "variant": entry.variant, "equivariant": entry.equivariant,
                "hyperparameters": model.hyper,
-               "learning_rate": model.config.get("learning_rate") or entry.learning_rate,
+               "learning_rate": config.rate_for(entry),
                "parameters": model.n_params},
         robot=spec.robot,
         dataset={"id": dataset.id, "content_hash": dataset.content_hash,

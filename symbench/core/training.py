@@ -45,13 +45,16 @@ class TrainConfig:
         for name in ("batch_size", "max_epochs", "stop_patience"):
             if getattr(self, name) < 1:
                 raise SymbenchError(f"TrainConfig.{name} must be at least 1, got {getattr(self, name)}")
+        if self.learning_rate is not None and not self.learning_rate > 0:
+            raise SymbenchError(f"TrainConfig.learning_rate must be positive, got {self.learning_rate}")
 
     def to_dict(self) -> dict[str, Any]:
         return asdict(self)
 
-    @classmethod
-    def from_dict(cls, d: dict[str, Any]) -> TrainConfig:
-        return cls(**d)
+    def rate_for(self, entry: ModelEntry) -> float:
+        """The learning rate a training of `entry` uses: this config's, else the model's."""
+        return entry.learning_rate if self.learning_rate is None else self.learning_rate
+
 
 
 @dataclass
@@ -89,7 +92,7 @@ def train(entry: ModelEntry, train: ViewArrays, val: ViewArrays, config: TrainCo
     normalizer = Normalizer.fit(train)
     backend = get_backend(entry.backend)
     compiled = backend.default_compiled if config.compile is None else config.compile
-    lr = config.learning_rate or entry.learning_rate
+    lr = config.rate_for(entry)
     identity = _identity(entry, dims, config, train, val)
     params = backend.init_params(entry, dims, config.hyper, config.seed)
     trainer = backend.make_trainer(entry, dims, config.hyper, params, lr, compiled)

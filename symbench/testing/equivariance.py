@@ -19,7 +19,8 @@ import numpy as np
 from symbench.core import schema
 from symbench.core.backends import get_backend
 from symbench.core.entries import ModelEntry
-from symbench.core.groups import GroupElement, LegGroup
+from symbench.core.evaluation import relative_error
+from symbench.core.groups import LegGroup
 from symbench.core.model_dims import dims_for
 from symbench.core.normalization import Normalizer
 
@@ -94,11 +95,6 @@ class EquivarianceReport:
         return "\n".join(lines)
 
 
-def relative_error(actual: np.ndarray, expected: np.ndarray) -> float:
-    scale = float(np.max(np.abs(expected))) if expected.size else 0.0
-    return float(np.max(np.abs(actual - expected))) / max(scale, np.finfo(np.float64).tiny)
-
-
 def element_errors(predictors: dict[str, Predict], group: LegGroup, n_features: int,
                    input_signs: np.ndarray | None = None, target_signs: np.ndarray | None = None,
                    n_samples: int = 32, seed: int = 0) -> tuple[ElementError, ...]:
@@ -117,17 +113,7 @@ def element_errors(predictors: dict[str, Predict], group: LegGroup, n_features: 
         for k, g in enumerate(group, start=1):
             actual = y_all[k * n_samples:(k + 1) * n_samples]
             found[g][name] = relative_error(actual, group.act(g, y, target_signs))
-    return tuple(ElementError(element_name(g), g.perm, g.reflect, found[g]) for g in group)
-
-
-def element_name(g: GroupElement) -> str:
-    """'identity', 'shift k' (a rotation by k legs), 'mirror k' (legs i -> k - i), else the perm."""
-    n, k = g.n_legs, g.perm[0]
-    if not g.reflect and all(p == (i + k) % n for i, p in enumerate(g.perm)):
-        return "identity" if k == 0 else f"shift {k}"
-    if g.reflect and all(p == (k - i) % n for i, p in enumerate(g.perm)):
-        return f"mirror {k}"
-    return str(g.perm)
+    return tuple(ElementError(g.name, g.perm, g.reflect, found[g]) for g in group)
 
 
 def check_model(entry: ModelEntry, group: LegGroup, n_samples: int = 32, seed: int = 0,

@@ -151,3 +151,9 @@ def test_bad_input_is_named():
                                             ("dihedral", 6, 1, 12), ("klein4", 4, 2, 4)])
 def test_from_spec(kind, n, k, order):
     assert groups.from_spec(n, kind, k).order == order
+
+
+def test_element_names():
+    assert [g.name for g in groups.cyclic(4, 2)] == ["identity", "shift 2"]
+    names = {g.name for g in groups.dihedral(6)}
+    assert {"identity", "shift 1", "shift 5", "mirror 0", "mirror 3"} <= names and len(names) == 12

@@ -57,3 +57,18 @@ def test_tables_and_plot_regenerate_identically(tmp_path, make_record):
 def test_empty_folder_is_a_clear_error(tmp_path):
     with pytest.raises(SymbenchError, match="no result records"):
         load_records(tmp_path)
+
+
+def test_records_without_the_ranking_metric_are_named(tmp_path, make_record):
+    record = make_record()
+    record["metrics"] = {"equivariance": {"max_rel_error": 1e-7}}
+    write_record(record, tmp_path / "r0.json")
+    with pytest.raises(SymbenchError, match="without a torque-error RMSE.*r0.json"):
+        aggregate(load_records(tmp_path))
+
+
+def test_checkpoint_files_beside_the_records_are_not_read(tmp_path, make_record):
+    write_runs(tmp_path, make_record, [dict(seed=s) for s in range(3)])
+    (tmp_path / "checkpoints" / "x" / "best").mkdir(parents=True)
+    (tmp_path / "checkpoints" / "x" / "best" / "model.json").write_text('{"format": "model"}')
+    assert len(load_records(tmp_path)) == 3

@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from symbench.core.data.raw_action import rotate_scene_about_gravity
-from symbench.core.evaluation import EvaluationContext, relative_change
+from symbench.core.evaluation import EvaluationContext, relative_error
 
 NAME = "invariance"
 DESCRIPTION = "max relative output change under random rotations about gravity + translations"
@@ -27,6 +27,6 @@ def evaluate(context: EvaluationContext) -> dict:
         shift = rng.uniform(-1.0, 1.0, size=3)
         moved = rotate_scene_about_gravity(raw, angle)
         moved["base_pos"] = moved["base_pos"] + shift
-        change = relative_change(context.predict_raw(moved, ids), base)
+        change = relative_error(context.predict_raw(moved, ids), base)
         trials.append({"angle_rad": angle, "shift_m": shift.tolist(), "rel_change": change})
     return {"max_rel_change": max(t["rel_change"] for t in trials), "trials": trials}

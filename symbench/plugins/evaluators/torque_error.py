@@ -17,7 +17,7 @@ def torque_metrics(pred: np.ndarray, target: np.ndarray) -> dict[str, float]:
     return {
         "rmse": overall,
         **{f"rmse_{j}": float(v) for j, v in zip(JOINTS, per_joint)},
-        "nrmse": overall / float(np.std(target)),
+        "nrmse": overall / spread if (spread := float(np.std(target))) > 0 else float("nan"),
         "samples": int(len(target)),
     }
 
