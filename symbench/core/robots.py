@@ -13,6 +13,7 @@ import hashlib
 import json
 import tomllib
 from dataclasses import dataclass
+from functools import cached_property
 from pathlib import Path
 from typing import Any
 
@@ -94,7 +95,7 @@ class RobotSpec:
     symmetry_mirror_offset: int
     canonical: str  # canonical JSON of the parsed toml, the source of spec_hash
 
-    @property
+    @cached_property
     def group(self) -> LegGroup:
         return from_spec(self.n_legs, self.symmetry_kind, self.symmetry_shift,
                          self.symmetry_mirror_offset)
@@ -232,9 +233,14 @@ def parse_spec(raw: dict, source: str = "robot.toml") -> RobotSpec:
         canonical=json.dumps(raw, sort_keys=True, separators=(",", ":")),
     )
     group = from_spec(n_legs, spec.symmetry_kind, spec.symmetry_shift, spec.symmetry_mirror_offset)
-    angles = np.diff(np.unwrap(np.radians(spec.mount_angles_deg)))
-    if n_legs > 1 and np.any(angles <= 0):
-        raise SymbenchError(f"{m}: legs must be numbered counter-clockwise (increasing angles_deg)")
+    unwrapped = np.unwrap(np.radians(spec.mount_angles_deg))
+    if n_legs > 1 and (np.any(np.diff(unwrapped) <= 0) or unwrapped[-1] - unwrapped[0] >= 2 * np.pi):
+        raise SymbenchError(f"{m}: legs must be numbered counter-clockwise, once around "
+                            "(increasing angles_deg spanning less than 360 degrees)")
+    if spec.symmetry_shift * group.rotation_order != n_legs:
+        raise SymbenchError(f"{source} [symmetry]: shift must be the legs per smallest rotation "
+                            f"of the group ({n_legs // group.rotation_order} for {group.name}), "
+                            f"got {spec.symmetry_shift}")
     check_geometry(spec.leg_rotations(), spec.leg_origins(), group, source)
     in_plane = (spec.base_inertia[0] == spec.base_inertia[1], spec.base_semi_axes[0] == spec.base_semi_axes[1])
     if group.rotation_order > 2 and not all(in_plane):

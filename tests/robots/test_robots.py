@@ -105,3 +105,16 @@ def test_a_spec_whose_base_lacks_the_declared_symmetry_is_refused(tmp_path):
     load = _spec_variant(tmp_path, {"inertia = [0.011005, 0.011005,": "inertia = [0.00834, 0.01367,"})
     with pytest.raises(SymbenchError, match="equal x and y base.inertia"):
         load()
+
+
+def test_a_shift_that_is_not_the_smallest_rotation_is_refused(tmp_path):
+    load = _spec_variant(tmp_path, {"shift = 1": "shift = 5"})
+    with pytest.raises(SymbenchError, match="shift must be the legs per smallest rotation"):
+        load()
+
+
+def test_mounts_going_round_twice_are_refused(tmp_path):
+    text = {"angles_deg = [30.0, 90.0, 150.0, 210.0, 270.0, 330.0]":
+            "angles_deg = [30.0, 150.0, 270.0, 390.0, 510.0, 630.0]"}
+    with pytest.raises(SymbenchError, match="once around"):
+        _spec_variant(tmp_path, text)()

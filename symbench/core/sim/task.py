@@ -22,9 +22,7 @@ from dm_control.mujoco import wrapper  # noqa: E402
 from dm_control.rl import control  # noqa: E402
 from dm_control.suite import base  # noqa: E402
 
-from symbench.core.robots import load_robot  # noqa: E402
-from symbench.core.scenario import DIRECTIONS  # noqa: E402
-from symbench.core.sim.arena import Arena, mat_to_quat  # noqa: E402
+from symbench.core.sim.arena import mat_to_quat  # noqa: E402
 from symbench.core.sim.gait import GaitPlan  # noqa: E402
 from symbench.core.sim.layout import ModelLayout  # noqa: E402
 from symbench.core.sim.model import compile_model  # noqa: E402
@@ -121,11 +119,9 @@ def load_climb(climb: Climb, time_limit: float = 10.0, environment_kwargs: dict 
 def load(robot: str, inclination_deg: float = 0.0, heading_deg: float = 0.0, yaw_deg: float = 0.0,
          direction: str = "forward", leg_order: tuple[int, ...] | None = None, seed: int = 0,
          time_limit: float = 10.0, environment_kwargs: dict | None = None) -> control.Environment:
-    """The suite-style loader: a `control.Environment` for `robot` on the given slope."""
-    from symbench.core.errors import SymbenchError
+    """The suite-style loader: a `control.Environment` for `robot` on the given slope (the
+    same climb as `Scenario` gives, gait carried along the symmetry)."""
+    from symbench.core.scenario import Scenario
 
-    if direction not in DIRECTIONS:
-        raise SymbenchError(f"direction '{direction}' is not one of {', '.join(DIRECTIONS)}")
-    climb = Climb(load_robot(robot), Arena(inclination_deg, heading_deg), yaw_deg,
-                  DIRECTIONS[direction], leg_order, seed)
-    return load_climb(climb, time_limit, environment_kwargs)
+    scenario = Scenario(robot, inclination_deg, heading_deg, yaw_deg, direction, leg_order, seed)
+    return load_climb(Climb.from_scenario(scenario), time_limit, environment_kwargs)
