@@ -42,8 +42,6 @@ RAW_COLUMNS: tuple[RawColumn, ...] = (
 )
 COLUMN_NAMES = tuple(c.name for c in RAW_COLUMNS)
 
-# Scenario fields stored with every trajectory (metadata, one value per trajectory).
-SCENARIO_FIELDS = ("robot", "inclination_deg", "heading_deg", "yaw_deg", "gait", "seed")
 
 
 def column_shape(col: RawColumn, n_legs: int) -> tuple[int, ...]:

@@ -47,12 +47,6 @@ class Scenario:
     def direction_deg(self) -> float:
         return DIRECTIONS[self.direction]
 
-    @property
-    def gait(self) -> str:
-        """A short gait label stored with trajectories: direction and leg order."""
-        order = "default" if self.leg_order is None else "-".join(map(str, self.leg_order))
-        return f"{self.direction}/{order}"
-
     def to_dict(self) -> dict[str, Any]:
         d = asdict(self)
         d["leg_order"] = None if self.leg_order is None else list(self.leg_order)

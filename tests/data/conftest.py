@@ -27,7 +27,6 @@ def smoke_hexa(home):
 def short_grid(robot: str, name: str = "small", seconds: float = 0.1):
     """A preset's scenarios, shortened so that the stand-in makes them in milliseconds."""
     spec = load_robot(robot)
-    from symbench.core.data.presets import rotation_order
 
-    grid = preset(name).scenarios(robot, spec.n_legs, rotation_order(spec.group))
+    grid = preset(name).scenarios(robot, spec.n_legs, spec.group.rotation_order)
     return [dataclasses.replace(s, seconds=seconds) for s in grid]

@@ -17,7 +17,7 @@ import numpy as np
 from symbench.core.arrays import ViewArrays
 from symbench.core.data.frames import LegFrames
 from symbench.core.data.metadata import read_metadata, verify
-from symbench.core.data.presets import parse_dataset_id, rotation_order
+from symbench.core.data.presets import parse_dataset_id
 from symbench.core.data.storage import read_trajectory
 from symbench.core.data.views import build_view
 from symbench.core.errors import SymbenchError
@@ -90,7 +90,7 @@ class Dataset:
 
     def split_context(self, seed: int) -> SplitContext:
         return SplitContext(self.id, self.trajectory_ids, self.scenarios, self.n_samples,
-                            rotation_order(self.spec.group), int(seed))
+                            self.spec.group.rotation_order, int(seed))
 
     def split_indices(self, split: str, seed: int = 0) -> SplitIndices:
         """Train, validation and test trajectory ids of a registered split."""

@@ -24,7 +24,7 @@ from symbench.core.data.columns import check_flags
 from symbench.core.data.dataset import Dataset, load_dataset
 from symbench.core.data.determinism import pin_portable_qp_build, portable_qp_in_process
 from symbench.core.data.metadata import METADATA, dataset_dir, library_versions, write_metadata
-from symbench.core.data.presets import RECORD_PERIOD, dataset_id, preset, rotation_order
+from symbench.core.data.presets import RECORD_PERIOD, dataset_id, preset
 from symbench.core.data.storage import atomic_write_json, read_json, sha256_file, write_trajectory
 from symbench.core.errors import SymbenchError
 from symbench.core.raw import SCHEMA_VERSION, validate_raw
@@ -153,7 +153,7 @@ def generate(robot: str, preset_name: str = "small", workers: int = 1,
     spec = load_robot(robot)
     grid = preset(preset_name)
     did = id_override or dataset_id(robot, preset_name)
-    order = rotation_order(spec.group)
+    order = spec.group.rotation_order
     scenarios = list(scenarios) if scenarios is not None else grid.scenarios(robot, spec.n_legs, order)
     root = dataset_dir(did)
     key = {"raw_schema_version": SCHEMA_VERSION, "robot_spec_hash": spec.spec_hash(),

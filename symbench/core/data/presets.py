@@ -99,7 +99,3 @@ def parse_dataset_id(dataset_id_: str) -> tuple[str, str] | None:
         return parts[0], parts[2]
     return None
 
-
-def rotation_order(group) -> int:
-    """Number of pure rotations in a LegGroup: the fundamental sector is 360 / this."""
-    return group.rotation_order

@@ -14,7 +14,6 @@ import numpy as np
 
 from symbench.core.errors import SymbenchError
 
-GRAVITY = np.array([0.0, 0.0, -9.81])
 
 
 def rot_z(angle: float) -> np.ndarray:
@@ -53,8 +52,3 @@ class Arena:
     @property
     def normal(self) -> np.ndarray:
         return self.rotation[:, 2]
-
-    def base_start(self, yaw_deg: float, height: float) -> tuple[np.ndarray, np.ndarray]:
-        """Base position and R_wb for a robot standing `height` above the surface origin."""
-        r_wb = self.rotation @ rot_z(np.radians(yaw_deg))
-        return height * self.normal, r_wb

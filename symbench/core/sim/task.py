@@ -52,9 +52,6 @@ class Physics(dm_mujoco.Physics):
     def sole_distances(self) -> np.ndarray:
         return self.layout.sole_distances(self.model.ptr, self.data.ptr)
 
-    def pad_clearances(self) -> np.ndarray:
-        return self.layout.pad_clearances(self.data.ptr)
-
     def contact_flags(self) -> np.ndarray:
         """The foot is in contact when its sole is within the spec's contact distance."""
         return self.sole_distances() < self.contact_distance
