@@ -39,3 +39,25 @@ def test_within_the_first_step_the_direction_is_the_body_frames():
     turned = Climb.from_scenario(Scenario(robot="hexa", yaw_deg=90.0, direction="left"), spec)
     assert turned.yaw_deg == 90.0 and turned.direction_deg == pytest.approx(30.0)
     assert turned.leg_order == (5, 0, 1, 2, 3, 4)
+
+
+def test_turned_scenario_is_the_group_action_on_the_raw_states():
+    """All raw columns, base pose and world-frame vectors included, equal g . raw of the
+    original for the rotation g that relabels by the symmetry step."""
+    from symbench.core.data.frames import LegFrames
+    from symbench.core.data.raw_action import act_on_raw
+    from symbench.core.groups import shift
+
+    spec = load_robot("hexa")
+    base = simulate(Scenario(robot="hexa", inclination_deg=60.0, heading_deg=30.0, yaw_deg=10.0,
+                             seconds=0.5))
+    turned = simulate(Scenario(robot="hexa", inclination_deg=60.0, heading_deg=30.0,
+                               yaw_deg=70.0, seconds=0.5))
+    frames = LegFrames.from_spec(spec)
+    errors = {}
+    for k in range(6):
+        moved = act_on_raw(shift(6, k), base.arrays, frames)
+        errors[k] = max(float(np.abs(moved[c] - turned.arrays[c]).max()) for c in moved)
+    best = min(errors, key=errors.get)
+    assert errors[best] < 1e-6, errors
+    assert sorted(errors.values())[1] > 1e-2  # and no other relabelling fits
