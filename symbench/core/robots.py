@@ -169,11 +169,11 @@ def _positives(table: dict, keys: tuple[str, ...], where: str) -> list[float]:
 def _parse_leg(raw: dict, src: str) -> LegSpec:
     leg, ankle, stance = (_get(raw, k, src) for k in ("leg", "ankle", "stance"))
     w = f"{src} [leg]"
-    lengths = {k: _positive(_get(leg["lengths"], k, w + " lengths"), f"{w} lengths.{k}")
+    lengths = {k: _positive(_get(_get(leg, "lengths", w), k, w + " lengths"), f"{w} lengths.{k}")
                for k in (*JOINT_NAMES, "foot")}
-    masses = {k: _positive(_get(leg["masses"], k, w + " masses"), f"{w} masses.{k}")
+    masses = {k: _positive(_get(_get(leg, "masses", w), k, w + " masses"), f"{w} masses.{k}")
               for k in JOINT_NAMES}
-    inertias = {k: _floats(_get(leg["inertias"], k, w + " inertias"), 3, f"{w} inertias.{k}")
+    inertias = {k: _floats(_get(_get(leg, "inertias", w), k, w + " inertias"), 3, f"{w} inertias.{k}")
                 for k in JOINT_NAMES}
     lower = _floats(_get(leg, "joint_lower", w), 3, w + " joint_lower")
     upper = _floats(_get(leg, "joint_upper", w), 3, w + " joint_upper")

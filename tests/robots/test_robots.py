@@ -118,3 +118,14 @@ def test_mounts_going_round_twice_are_refused(tmp_path):
             "angles_deg = [30.0, 150.0, 270.0, 390.0, 510.0, 630.0]"}
     with pytest.raises(SymbenchError, match="once around"):
         _spec_variant(tmp_path, text)()
+
+
+def test_a_missing_leg_table_is_named():
+    import tomllib
+
+    from symbench.plugins.robots import ROBOTS_DIR
+
+    raw = tomllib.loads((ROBOTS_DIR / "hexa" / "robot.toml").read_text())
+    del raw["leg"]["masses"]
+    with pytest.raises(SymbenchError, match=r"x.toml \[leg\]: missing 'masses'"):
+        parse_spec(raw, "x.toml")
