@@ -43,15 +43,6 @@ class Tracking:
     steps: int
 
 
-def _state_row(physics, contact: np.ndarray) -> dict[str, np.ndarray]:
-    data, lay = physics.data, physics.layout
-    r_base = data.xmat[lay.base_body].reshape(3, 3)
-    return {"t": np.array(data.time), "base_pos": data.qpos[:3].copy(),
-            "base_quat": data.qpos[3:7].copy(), "base_linvel": data.qvel[:3].copy(),
-            "base_angvel": r_base @ data.qvel[3:6], "q": data.qpos[lay.qpos].copy(),
-            "qd": data.qvel[lay.dof].copy(), "contact": contact.astype(np.float64)}
-
-
 def _desired(reference: dict[str, np.ndarray], t: float, period: float) -> dict[str, np.ndarray]:
     """q and qd of the reference at time t (linear between its samples)."""
     s = t / period
@@ -85,14 +76,16 @@ def track(scenario: Scenario, reference: dict[str, np.ndarray], policy: Policy,
     grace = int(round(GRACE_S / model.opt.timestep))
     for _ in range(int(round(duration / model.opt.timestep))):
         k = int(data.time / period + 1e-9)  # the reference sample now
-        contact = physics.sole_distances() < spec.magnet.contact_distance
+        # what the robot measures (the observation's magnet column is only the last command)
+        now = {**task.get_observation(physics), "t": np.array(data.time)}
+        del now["magnet"]
+        contact = now["contact"] > 0.5
         stance = reference["magnet"][k] > 0.5
         off_steps = np.where(stance & ~contact, off_steps + 1, 0)
         off_too_long = off_steps > grace  # only these count as stance feet that left
         failure = detachment(off_too_long, ~off_too_long, data, lay.base_body, normal, height0)
         if failure is not None:
             break
-        now = _state_row(physics, contact)
         errors.append(now["q"] - _desired(reference, data.time, period)["q"])
         target = _desired(reference, data.time + period, period)
         # measured state now; what is not measured (base acceleration, qdd, magnets) is the
