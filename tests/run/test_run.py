@@ -69,3 +69,12 @@ def test_a_run_may_choose_the_next_variant(smoke_home, tmp_path):
     assert record.metrics["equivariance"]["max_rel_error"] < 1e-4
     with pytest.raises(UnknownNameError, match="did you mean next"):
         run(RunSpec(model="sdnn", robot="hexa", variant="nxt", output=tmp_path))
+
+
+def test_timings_count_each_second_once(smoke_home, tmp_path):
+    record = run(RunSpec(model="sdnn", robot="hexa", preset="smoke",
+                         evaluators=("torque-error", "generalization"), output=tmp_path,
+                         progress=False, max_epochs=2))
+    timings = record.timings_s
+    assert timings["retraining_s"] > 0 and timings["evaluation_s"] >= 0
+    assert record.training.stopped_early == (record.training.epochs < 2)
