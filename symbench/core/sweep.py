@@ -46,14 +46,14 @@ def _run_quietly(spec: RunSpec) -> str:
 def sweep(specs: list[RunSpec], workers: int = 1, executor: str = "local",
           address: str | None = None, report: Callable[[str], None] = print) -> list[str]:
     """Run the unfinished specs; returns the keys that ran."""
+    if executor not in ("local", "ray"):
+        raise SymbenchError(f"unknown executor '{executor}' (local, ray)")
     todo = [s for s in specs if not finished(s)]
     report(f"{len(specs) - len(todo)} of {len(specs)} runs already have records; {len(todo)} to run")
     for robot_spec in {(s.robot, s.preset): s for s in todo}.values():
         ensure_dataset(robot_spec)
     if executor == "ray":
         return _sweep_ray(todo, address, report)
-    if executor != "local":
-        raise SymbenchError(f"unknown executor '{executor}' (local, ray)")
     if workers <= 1:
         done = []
         for spec in todo:
