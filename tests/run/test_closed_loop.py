@@ -51,3 +51,14 @@ def test_closed_loop_evaluator_in_a_run(smoke_home, tmp_path):
         assert 0.0 <= metrics[f"{prefix}success_rate"] <= 1.0
         assert 0.0 < metrics[f"{prefix}time_to_failure_s"] <= metrics["horizon_s"]
         assert metrics[f"{prefix}joint_rmse_rad"] >= 0.0
+
+
+def test_references_are_the_test_trajectories_by_id():
+    from types import SimpleNamespace
+
+    from symbench.plugins.evaluators.closed_loop import held_out_scenarios
+
+    # trajectory 1 failed in generation: ids are 0, 2, 3 at positions 0, 1, 2
+    dataset = SimpleNamespace(trajectory_ids=np.array([0, 2, 3]),
+                              scenarios=({"yaw_deg": 0.0}, {"yaw_deg": 20.0}, {"yaw_deg": 30.0}))
+    assert held_out_scenarios(dataset, np.array([3, 2]), 2) == [{"yaw_deg": 30.0}, {"yaw_deg": 20.0}]

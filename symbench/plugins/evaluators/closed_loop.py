@@ -38,9 +38,8 @@ def evaluate(context: EvaluationContext) -> dict:
     control = context.robot.control
     gains = {"model": (0.0, 0.0), "model+pd": (PD_FRACTION * control.kp, PD_FRACTION * control.kd)}
     runs: dict[str, list] = {mode: [] for mode in gains}
-    scenarios = [context.dataset.scenarios[i] for i in context.test_trajectories[:SCENARIOS]]
     references = 0
-    for fields in scenarios:
+    for fields in held_out_scenarios(context.dataset, context.test_trajectories, SCENARIOS):
         scenario = Scenario.from_dict({**fields, "seconds": seconds})
         reference = simulate(scenario)
         if not reference.attached:  # the expert itself fell: no reference to track
@@ -53,6 +52,13 @@ def evaluate(context: EvaluationContext) -> dict:
         prefix = "" if mode == "model" else "pd_"
         out.update({prefix + k: v for k, v in _summary(results).items()})
     return out
+
+
+def held_out_scenarios(dataset, test_ids: np.ndarray, n: int) -> list[dict]:
+    """The scenarios of the first n test trajectories, looked up by trajectory id (ids skip
+    the trajectories that failed in generation, so they are not positions)."""
+    by_id = dict(zip(np.asarray(dataset.trajectory_ids).tolist(), dataset.scenarios))
+    return [by_id[int(i)] for i in test_ids[:n]]
 
 
 def _summary(results: list) -> dict:
