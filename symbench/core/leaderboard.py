@@ -17,6 +17,7 @@ import pandas as pd
 
 from symbench.core.atomic import write_text_atomic
 from symbench.core.errors import SymbenchError
+from symbench.core.leaderboard_summary import headline
 from symbench.core.plots import sample_efficiency_png
 from symbench.core.results import ResultRecord, read_record
 
@@ -30,6 +31,8 @@ COLUMNS = {
     ("invariance", "max_rel_change"): "invar_change",
     ("closed-loop", "success_rate"): "cl_success",
     ("closed-loop", "time_to_failure_s"): "cl_ttf_s",
+    ("closed-loop", "pd_success_rate"): "cl_pd_success",
+    ("closed-loop", "pd_time_to_failure_s"): "cl_pd_ttf_s",
 }
 
 
@@ -116,11 +119,14 @@ def markdown(table: pd.DataFrame, robot: str) -> str:
 
 
 def sample_efficiency_plot(table: pd.DataFrame, robot: str, path: Path) -> bool:
-    """Test RMSE against training fraction, one line per model; False when no fractions."""
-    rows = table[(table.robot == robot) & table.split.str.startswith("fraction-")].copy()
-    if rows.empty:
+    """Test RMSE against training fraction, one line per model; False when no fractions.
+    `iid` is the same split with all of its training trajectories, so it is the point at 1."""
+    rows = table[table.robot == robot].copy()
+    fractions = rows.split.str.startswith("fraction-")
+    if not fractions.any():
         return False
-    rows["fraction"] = rows.split.str.removeprefix("fraction-").astype(float)
+    rows = rows[fractions | (rows.split == "iid")]
+    rows["fraction"] = rows.split.str.removeprefix("fraction-").replace("iid", "1").astype(float)
     curves = {}
     for (model, variant, backend), part in rows.groupby(["model", "variant", "backend"], sort=True):
         part = part.sort_values("fraction")
@@ -137,6 +143,9 @@ def write_leaderboard(results: Path, out: Path) -> list[Path]:
     csv = out / "leaderboard.csv"
     write_text_atomic(csv, table.to_csv(index=False, float_format="%.6g"))
     written.append(csv)
+    summary = out / "summary.md"
+    write_text_atomic(summary, headline(table))
+    written.append(summary)
     for robot in sorted(table.robot.unique()):
         md = out / f"{robot}.md"
         write_text_atomic(md, markdown(table, robot))

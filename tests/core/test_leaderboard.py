@@ -46,10 +46,11 @@ def test_tables_and_plot_regenerate_identically(tmp_path, make_record):
     write_runs(tmp_path / "records", make_record, runs)
     first = write_leaderboard(tmp_path / "records", tmp_path / "out")
     names = sorted(p.name for p in first)
-    assert names == ["hexa-sample-efficiency.png", "hexa.md", "leaderboard.csv", "nona.md"]
-    before = {p.name: p.read_bytes() for p in first if p.suffix != ".png"}
+    assert names == ["hexa-sample-efficiency.png", "hexa.md", "leaderboard.csv", "nona.md",
+                     "summary.md"]
+    before = {p.name: p.read_bytes() for p in first}
     second = write_leaderboard(tmp_path / "records", tmp_path / "out")
-    assert {p.name: p.read_bytes() for p in second if p.suffix != ".png"} == before
+    assert {p.name: p.read_bytes() for p in second} == before
     nona = (tmp_path / "out" / "nona.md").read_text()
     assert "| 1 | sdnn | acc | torch | 2 (<3) |" in nona  # too few seeds is flagged
 

@@ -1,0 +1,50 @@
+"""The summary page puts models side by side; the sample-efficiency curve ends at iid."""
+
+from __future__ import annotations
+
+import pytest
+
+from symbench.core import leaderboard
+from symbench.core.leaderboard import aggregate, load_records, sample_efficiency_plot
+from symbench.core.leaderboard_summary import headline
+from symbench.core.results import write_record
+
+
+def write_runs(folder, make_record, runs):
+    for i, kwargs in enumerate(runs):
+        write_record(make_record(**kwargs), folder / f"r{i}.json")
+
+
+def test_models_are_columns_and_splits_are_ordered(tmp_path, make_record):
+    runs = [dict(model=m, split=split, seed=s, rmse=r + s / 100)
+            for m, r in (("sdnn", 0.1), ("ffnn", 1.0))
+            for split in ("unseen-rotation", "iid", "fraction-0.5") for s in range(3)]
+    write_runs(tmp_path, make_record, runs)
+    page = headline(aggregate(load_records(tmp_path)))
+    rows = [line for line in page.splitlines() if line.startswith("| ")]
+    assert rows[0] == "| robot | split | sdnn | ffnn |"  # the better model first
+    assert [r.split(" | ")[1] for r in rows[1:]] == ["iid", "unseen-rotation", "fraction-0.5"]
+    assert rows[1] == "| hexa | iid | 0.11 ± 0.01 | 1.01 ± 0.01 |"
+    assert "Closed loop" not in page  # no closed-loop records, no section
+
+
+def test_closed_loop_section_shows_alone_and_with_pd(tmp_path, make_record):
+    for s in range(3):
+        record = make_record(seed=s)
+        record["metrics"]["closed-loop"] = {"time_to_failure_s": 1.0 + s, "success_rate": 0.0,
+                                            "pd_time_to_failure_s": 10.0, "pd_success_rate": 1.0}
+        write_record(record, tmp_path / f"r{s}.json")
+    page = headline(aggregate(load_records(tmp_path)))
+    assert "| hexa | iid | 2 / 10 |" in page
+
+
+def test_sample_efficiency_curve_ends_with_iid_at_one(tmp_path, make_record, monkeypatch):
+    runs = [dict(model="sdnn", split=split, seed=s, rmse=r)
+            for split, r in (("fraction-0.25", 0.4), ("iid", 0.1)) for s in range(3)]
+    write_runs(tmp_path, make_record, runs)
+    drawn = {}
+    monkeypatch.setattr(leaderboard, "sample_efficiency_png",
+                        lambda curves, title, path: drawn.update(curves))
+    assert sample_efficiency_plot(aggregate(load_records(tmp_path)), "hexa", tmp_path / "p.png")
+    fractions, means, _ = drawn["sdnn (acc, torch)"]
+    assert fractions == [0.25, 1.0] and means == pytest.approx([0.4, 0.1])
