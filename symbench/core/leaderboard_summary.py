@@ -41,15 +41,15 @@ def _column_order(table: pd.DataFrame) -> list[str]:
     return sorted(mean_rank.index, key=lambda label: (mean_rank[label], label))
 
 
-def rmse_section(table: pd.DataFrame) -> list[str]:
-    """Test torque RMSE per robot and split, models in columns."""
+def error_section(table: pd.DataFrame, metric: str, title: str) -> list[str]:
+    """One error metric per robot and split, models in columns."""
     columns = _column_order(table)
-    lines = ["## Test torque RMSE (N m), mean ± std over seeds", "",
-             "| robot | split | " + " | ".join(columns) + " |", "|---|---|" + "---|" * len(columns)]
+    lines = [f"## {title}", "", "| robot | split | " + " | ".join(columns) + " |",
+             "|---|---|" + "---|" * len(columns)]
     groups = table.groupby(["robot", "split"], sort=False)
     for robot, split in sorted(groups.groups, key=lambda k: (k[0], _split_key(k[1]))):
         part = groups.get_group((robot, split)).set_index("label")
-        cells = [_cell(part.at[c, "rmse_Nm_mean"], part.at[c, "rmse_Nm_std"])
+        cells = [_cell(part.at[c, f"{metric}_mean"], part.at[c, f"{metric}_std"])
                  if c in part.index else "-" for c in columns]
         lines.append(f"| {robot} | {split} | " + " | ".join(cells) + " |")
     return lines + [""]
@@ -79,4 +79,7 @@ def headline(table: pd.DataFrame) -> str:
     lines = ["# Leaderboard summary", "",
              f"Seeds per run group: {', '.join(map(str, seeds))}. Rank within each robot and "
              "split is by mean test RMSE; the per-robot pages have every metric.", ""]
-    return "\n".join(lines + rmse_section(table) + closed_loop_section(table))
+    rmse = error_section(table, "rmse_Nm", "Test torque RMSE (N m), mean ± std over seeds")
+    nrmse = error_section(table, "nrmse", "Normalized test RMSE (RMSE / std of the test "
+                          "torques), comparable across robots")
+    return "\n".join(lines + rmse + nrmse + closed_loop_section(table))
