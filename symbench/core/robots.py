@@ -162,6 +162,31 @@ def _positive(value: Any, where: str) -> float:
     return x
 
 
+def _non_negative(value: Any, where: str) -> float:
+    """Damping and stiffness: zero is allowed, a negative value would inject energy."""
+    if value == 0:
+        return 0.0
+    try:
+        return _positive(value, where)
+    except SymbenchError:
+        raise SymbenchError(f"{where}: expected a non-negative number, got {value!r}") from None
+
+
+def _positive_floats(value: Any, n: int, where: str) -> tuple[float, ...]:
+    """Masses and principal inertias: MuJoCo needs them strictly positive."""
+    out = _floats(value, n, where)
+    if min(out) <= 0:
+        raise SymbenchError(f"{where}: expected {n} positive numbers, got {value!r}")
+    return out
+
+
+def _limits(lower: Any, upper: Any, where: str) -> tuple[tuple[float, ...], tuple[float, ...]]:
+    lo, hi = _floats(lower, 3, f"{where} lower"), _floats(upper, 3, f"{where} upper")
+    if any(a >= b for a, b in zip(lo, hi)):
+        raise SymbenchError(f"{where}: every lower limit must be below its upper limit")
+    return lo, hi
+
+
 def _positives(table: dict, keys: tuple[str, ...], where: str) -> list[float]:
     return [_positive(_get(table, k, where), f"{where} {k}") for k in keys]
 
@@ -173,13 +198,12 @@ def _parse_leg(raw: dict, src: str) -> LegSpec:
                for k in (*JOINT_NAMES, "foot")}
     masses = {k: _positive(_get(_get(leg, "masses", w), k, w + " masses"), f"{w} masses.{k}")
               for k in JOINT_NAMES}
-    inertias = {k: _floats(_get(_get(leg, "inertias", w), k, w + " inertias"), 3, f"{w} inertias.{k}")
-                for k in JOINT_NAMES}
-    lower = _floats(_get(leg, "joint_lower", w), 3, w + " joint_lower")
-    upper = _floats(_get(leg, "joint_upper", w), 3, w + " joint_upper")
-    if any(lo >= hi for lo, hi in zip(lower, upper)):
-        raise SymbenchError(f"{w}: joint_lower must be below joint_upper")
+    inertias = {k: _positive_floats(_get(_get(leg, "inertias", w), k, w + " inertias"), 3,
+                                    f"{w} inertias.{k}") for k in JOINT_NAMES}
+    lower, upper = _limits(_get(leg, "joint_lower", w), _get(leg, "joint_upper", w),
+                           f"{w} joint")
     a = f"{src} [ankle]"
+    ankle_lower, ankle_upper = _limits(_get(ankle, "lower", a), _get(ankle, "upper", a), a)
     ankle_inertias = _get(ankle, "inertias", a)
     if len(ankle_inertias) != 3:
         raise SymbenchError(f"{a}: inertias needs 3 rows (one per gimbal link)")
@@ -188,13 +212,13 @@ def _parse_leg(raw: dict, src: str) -> LegSpec:
         raise SymbenchError(f"{src} [stance]: {pose} lies outside the joint limits")
     return LegSpec(
         lengths=lengths, masses=masses, inertias=inertias, joint_lower=lower, joint_upper=upper,
-        joint_damping=float(leg.get("joint_damping", 0.0)),
-        ankle_masses=_floats(_get(ankle, "masses", a), 3, a + " masses"),
-        ankle_inertias=tuple(_floats(r, 3, a + " inertias") for r in ankle_inertias),
-        ankle_lower=_floats(_get(ankle, "lower", a), 3, a + " lower"),
-        ankle_upper=_floats(_get(ankle, "upper", a), 3, a + " upper"),
-        ankle_damping=float(_get(ankle, "damping", a)),
-        ankle_stiffness=float(_get(ankle, "stiffness", a)),
+        joint_damping=_non_negative(leg.get("joint_damping", 0.0), w + " joint_damping"),
+        ankle_masses=_positive_floats(_get(ankle, "masses", a), 3, a + " masses"),
+        ankle_inertias=tuple(_positive_floats(r, 3, a + " inertias") for r in ankle_inertias),
+        ankle_lower=ankle_lower,
+        ankle_upper=ankle_upper,
+        ankle_damping=_non_negative(_get(ankle, "damping", a), a + " damping"),
+        ankle_stiffness=_non_negative(_get(ankle, "stiffness", a), a + " stiffness"),
         sole_radius=_positive(_get(ankle, "sole_radius", a), a + " sole_radius"),
         stance=pose,
     )

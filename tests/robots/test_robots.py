@@ -129,3 +129,20 @@ def test_a_missing_leg_table_is_named():
     del raw["leg"]["masses"]
     with pytest.raises(SymbenchError, match=r"x.toml \[leg\]: missing 'masses'"):
         parse_spec(raw, "x.toml")
+
+
+@pytest.mark.parametrize("table, key, value, message", [
+    ("leg", "joint_damping", -0.1, "joint_damping: expected a non-negative number"),
+    ("ankle", "stiffness", -1.0, "stiffness: expected a non-negative number"),
+    ("ankle", "masses", [0.03, 0.0, 0.3], "masses: expected 3 positive numbers"),
+    ("ankle", "lower", [-0.5, 0.5, -2.0], "lower limit must be below its upper"),
+])
+def test_physically_impossible_values_are_named(table, key, value, message):
+    import tomllib
+
+    from symbench.plugins.robots import ROBOTS_DIR
+
+    raw = tomllib.loads((ROBOTS_DIR / "hexa" / "robot.toml").read_text())
+    raw[table][key] = value
+    with pytest.raises(SymbenchError, match=message):
+        parse_spec(raw)
