@@ -61,7 +61,8 @@ def check_consistent(records: Iterable[tuple[Path, ResultRecord]]) -> None:
 def _flat(record: ResultRecord) -> dict:
     row = {"robot": record.robot, "split": record.split, "model": record.model.name,
            "variant": record.model.variant, "backend": record.model.backend, "seed": record.seed,
-           "dataset": record.dataset.id, "parameters": record.model.parameters}
+           "dataset": record.dataset.id, "parameters": record.model.parameters,
+           "epochs": float(record.training.epochs)}
     for (evaluator, metric), column in COLUMNS.items():
         value = record.metrics.get(evaluator, {}).get(metric)
         row[column] = float(value) if isinstance(value, (int, float)) else np.nan
@@ -83,7 +84,8 @@ def aggregate(records: list[tuple[Path, ResultRecord]]) -> pd.DataFrame:
         names = ", ".join(sorted(str(p.name) for (p, _), m in zip(records, missing) if m)[:5])
         raise SymbenchError(f"records without a torque-error RMSE cannot be ranked ({names}); "
                             "run them with the torque-error evaluator")
-    metrics = [c for c in COLUMNS.values() if runs[c].notna().any()]
+    # epochs show when the stopping rule ended a training early (an under-trained model)
+    metrics = [c for c in COLUMNS.values() if runs[c].notna().any()] + ["epochs"]
     grouped = runs.groupby(keys, sort=True)
     table = grouped.agg(seeds=("seed", "nunique"), parameters=("parameters", "first"),
                         dataset=("dataset", "first"))

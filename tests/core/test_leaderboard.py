@@ -25,6 +25,7 @@ def test_mean_std_and_rank(tmp_path, make_record):
     assert sdnn.seeds == 3
     assert sdnn.rmse_Nm_mean == pytest.approx(0.2)
     assert sdnn.rmse_Nm_std == pytest.approx(0.1)
+    assert sdnn.epochs_mean == 3  # shows when the stopping rule ended training early
 
 
 def test_refuses_to_mix_dataset_versions(tmp_path, make_record):
