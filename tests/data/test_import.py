@@ -110,7 +110,7 @@ def test_cli_import_info_and_export(smoke_hexa, tmp_path):
     assert out.exit_code == 0, out.output
     out = runner.invoke(cli, ["data", "import", str(tmp_path / "x"), "--id", "again"])
     assert out.exit_code == 0 and "imported 4 trajectories" in out.output
-    out = runner.invoke(cli, ["data", "info", "hexa-climb-paper-v3"])
+    out = runner.invoke(cli, ["data", "info", "hexa-climb-paper-v4"])
     assert out.exit_code != 0 and "symbench data generate --robot hexa --preset paper" in out.output
     out = runner.invoke(cli, ["data", "info", smoke_hexa.dataset_id])
     assert out.exit_code == 0 and "unseen-rotation" in out.output

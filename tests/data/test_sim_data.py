@@ -152,13 +152,15 @@ def test_ctrl_c_during_generation_keeps_finished_work_and_resumes(tmp_path):
     import time
     from pathlib import Path
 
+    from symbench.core.data.presets import dataset_id
+
     env = dict(os.environ, MUJOCO_GL="disable", SYMBENCH_HOME=str(tmp_path))
     command = [str(Path(sys.executable).with_name("symbench")), "data", "generate", "--robot",
                "magneto", "--preset", "small", "--no-progress"]
     proc = subprocess.Popen(command, env=env, start_new_session=True, stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT,
                             preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
-    folder = tmp_path / "datasets" / "magneto-climb-small-v3" / "records"
+    folder = tmp_path / "datasets" / dataset_id("magneto", "small") / "records"
     while not folder.is_dir() or len(list(folder.glob("*.json"))) < 3:
         time.sleep(0.2)
     os.killpg(proc.pid, signal.SIGINT)

@@ -1,19 +1,114 @@
-"""Bit-for-bit reproducible simulation: pin proxsuite to its portable (non-SIMD) build.
+"""Bit-for-bit identical simulation on every x86-64 CPU: the generator's numerics are pinned.
 
-proxsuite's AVX2 and AVX-512 builds return solutions whose last bits vary from call to call
-for identical inputs (measured: two distinct results over 60 solves of one dense QP), and the
-controller's feedback lets such differences grow, so one scenario gave different files in
-different processes. The portable build gives one result and is as fast for the controller's
-small QPs (hexa, 4 x 1 s: 2.01 s against 1.97 s). proxsuite picks its build when first
-imported (the controller imports it lazily), so the pin must come before that.
+Why: the same scenario gave different trajectories on an Intel Xeon (AVX-512) and an AMD
+EPYC (AVX2), because several libraries on the simulation path pick their kernels by CPU at
+run time, and each kernel rounds differently in the last bit:
+- numpy's bundled OpenBLAS (every `@` product: rotations, Jacobians, the controller's mass
+  matrix products): FMA kernels on Haswell/Zen, AVX-512 kernels on SkylakeX, no FMA on
+  Sandybridge. Measured on one AMD machine, kernel alone changed: the first differences are
+  the joint torques and accelerations of the controller's first QP at t = 0 (~1e-13 N m).
+- numpy's own ufunc loops (`arccos`, `arctan2`, `sin`, `cos` in the kinematics), which
+  switch to AVX-512 (SVML) code on CPUs that have it;
+- glibc's libm (used by MuJoCo, `math` and numpy's scalar paths), whose `sin`, `cos`, `exp`,
+  `atan2`, `pow` ... have separate FMA and SSE2 builds chosen per CPU (measured: all of them
+  round differently between the two);
+- proxsuite, whose AVX2 and AVX-512 builds even vary from call to call;
+- pyarrow (Parquet writing), which dispatches SIMD code by CPU.
+The controller's feedback then grows last-bit differences into different files.
+
+The fix: dataset trajectories are simulated only in worker processes started with the
+environment below, which fixes every one of these to a kernel that every x86-64 CPU able to
+run this numpy (its baseline is x86-64-v2) executes identically; proxsuite is pinned to its
+portable build before it is imported. `require_pinned_numerics` checks, inside the worker,
+that each pin took effect, and generation refuses to simulate a standard dataset otherwise.
+Limits: identity holds for the same library versions (recorded in the dataset metadata and
+its hash) and the same glibc (its libm implementation differs between releases).
+MuJoCo has no CPU dispatch.
 """
 
 from __future__ import annotations
 
+import os
 import sys
 import types
+from collections.abc import Iterator
+from contextlib import contextmanager
+
+from symbench.core.errors import SymbenchError
 
 PORTABLE = "proxsuite.proxsuite_pywrap"
+OPENBLAS_CORE = "Nehalem"  # SSE4.2, no FMA: part of numpy's x86-64-v2 baseline
+GLIBC_HWCAPS = "glibc.cpu.hwcaps=-AVX,-AVX2,-FMA,-FMA4,-AVX512F"  # libm's SSE2 builds
+
+
+def _numpy_dispatch_targets() -> list[str]:
+    """numpy's optional CPU targets (beyond its baseline), as named by this numpy."""
+    from numpy._core._multiarray_umath import __cpu_dispatch__
+
+    return list(__cpu_dispatch__)
+
+
+def pinned_environment() -> dict[str, str]:
+    """The environment variables a worker needs before it loads any numerical library."""
+    return {
+        "OPENBLAS_CORETYPE": OPENBLAS_CORE,
+        "OPENBLAS_NUM_THREADS": "1",
+        "OPENBLAS_L2_SIZE": "262144",
+        "OMP_NUM_THREADS": "1",
+        "NPY_DISABLE_CPU_FEATURES": " ".join(_numpy_dispatch_targets()),
+        "GLIBC_TUNABLES": GLIBC_HWCAPS,
+        "ARROW_USER_SIMD_LEVEL": "NONE",
+    }
+
+
+@contextmanager
+def pinned_worker_environment() -> Iterator[None]:
+    """Processes started inside this block inherit the pinned environment; restored after."""
+    pins = pinned_environment()
+    saved = {name: os.environ.get(name) for name in pins}
+    os.environ.update(pins)
+    try:
+        yield
+    finally:
+        for name, value in saved.items():
+            if value is None:
+                os.environ.pop(name, None)
+            else:
+                os.environ[name] = value
+
+
+def numerics_problems() -> list[str]:
+    """What in this process is not pinned (empty when simulating here is reproducible)."""
+    from numpy._core._multiarray_umath import __cpu_features__
+    from threadpoolctl import threadpool_info
+
+    problems = [f"numpy dispatches {f} loops" for f in _numpy_dispatch_targets()
+                if __cpu_features__.get(f)]
+    for lib in threadpool_info():
+        if lib.get("internal_api") != "openblas":
+            continue
+        core = str(lib.get("architecture", ""))
+        if core.lower() != OPENBLAS_CORE.lower():
+            problems.append(f"OpenBLAS {lib['filepath']} runs {core or 'unknown'} kernels, "
+                            f"not {OPENBLAS_CORE}")
+        if lib.get("num_threads") != 1:
+            problems.append(f"OpenBLAS {lib['filepath']} uses {lib.get('num_threads')} threads")
+    for name in ("GLIBC_TUNABLES", "ARROW_USER_SIMD_LEVEL", "OPENBLAS_L2_SIZE"):
+        if os.environ.get(name) != pinned_environment()[name]:
+            problems.append(f"{name} is {os.environ.get(name)!r} (set before the process started)")
+    if not portable_qp_in_process():
+        problems.append("proxsuite's SIMD build is loaded")
+    return problems
+
+
+def require_pinned_numerics() -> None:
+    """Refuse to simulate a standard dataset with CPU-dependent kernels."""
+    pin_portable_qp_build()
+    problems = numerics_problems()
+    if problems:
+        raise SymbenchError("refusing to generate data with CPU-dependent numerics ("
+                            + "; ".join(problems) + "): standard datasets are simulated in "
+                            "worker processes that symbench.core.data.generation starts pinned")
 
 
 def pin_portable_qp_build() -> None:
@@ -21,12 +116,12 @@ def pin_portable_qp_build() -> None:
     if "proxsuite" in sys.modules:
         return
     stub = types.ModuleType("proxsuite.instructionset")
-    stub.has_AVX512F = stub.has_AVX2 = lambda: False
+    stub.has_AVX512F = stub.has_AVX2 = lambda: False  # type: ignore[attr-defined]
     sys.modules["proxsuite.instructionset"] = stub
 
 
 def portable_qp_in_process() -> bool:
-    """Whether simulating in this process is reproducible (proxsuite portable or not loaded)."""
+    """Whether proxsuite is its portable build here (or not loaded yet)."""
     loaded = sys.modules.get("proxsuite")
     if loaded is None:
         return True

@@ -22,7 +22,8 @@ from typing import Any
 
 from symbench.core.data.columns import check_flags
 from symbench.core.data.dataset import Dataset, load_dataset
-from symbench.core.data.determinism import pin_portable_qp_build, portable_qp_in_process
+from symbench.core.data.determinism import (numerics_problems, pinned_worker_environment,
+                                            require_pinned_numerics)
 from symbench.core.data.metadata import METADATA, dataset_dir, library_versions, write_metadata
 from symbench.core.data.presets import RECORD_PERIOD, dataset_id, preset
 from symbench.core.data.storage import atomic_write_json, read_json, sha256_file, write_trajectory
@@ -67,8 +68,8 @@ def default_simulator() -> Simulator:
 
 
 def _is_real_simulator(sim: Simulator) -> bool:
-    """Only the real simulator's QP build decides reproducibility (named, not imported, so
-    that asking does not load proxsuite)."""
+    """Only the real simulator needs pinned numerics (named, not imported, so that asking
+    does not load proxsuite); tests' stand-ins run anywhere."""
     return f"{getattr(sim, '__module__', '')}.{getattr(sim, '__qualname__', '')}" == \
         "symbench.core.sim.rollout.simulate"
 
@@ -83,7 +84,8 @@ def trajectory_file(index: int) -> str:
 
 def run_task(task: Task) -> dict[str, Any]:
     """Simulate one scenario, write its file and record; return the record."""
-    pin_portable_qp_build()
+    if _is_real_simulator(task.simulator):
+        require_pinned_numerics()
     record: dict[str, Any] = {"id": task.index, "scenario": task.scenario, "key": task.key}
     try:
         rollout = task.simulator(Scenario.from_dict(task.scenario),
@@ -131,7 +133,8 @@ def _run_all(tasks: Sequence[Task], workers: int, on_done: Callable[[dict], None
         return
     pool = ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn"))
     try:
-        pending: set[Future] = {pool.submit(run_task, t) for t in tasks}
+        with pinned_worker_environment():  # the workers start at the first submit
+            pending: set[Future] = {pool.submit(run_task, t) for t in tasks}
         while pending:
             done, pending = wait(pending, return_when=FIRST_COMPLETED)
             for future in done:
@@ -147,8 +150,9 @@ def generate(robot: str, preset_name: str = "small", workers: int = 1,
     """Generate (or resume) the dataset of `preset_name` for `robot` in the cache.
 
     `scenarios` and `id_override` replace the preset's grid and id (tests use tiny grids).
-    Workers are spawned processes: a script calling this with workers > 1 needs the usual
-    `if __name__ == "__main__":` guard.
+    The real simulator runs in spawned worker processes with pinned numerics (see
+    symbench.core.data.determinism), even for workers=1 unless this process is pinned: a
+    script calling this needs the usual `if __name__ == "__main__":` guard.
     """
     spec = load_robot(robot)
     grid = preset(preset_name)
@@ -159,8 +163,8 @@ def generate(robot: str, preset_name: str = "small", workers: int = 1,
     key = {"raw_schema_version": SCHEMA_VERSION, "robot_spec_hash": spec.spec_hash(),
            "record_period_s": RECORD_PERIOD, "versions": library_versions()}
     sim = simulator or default_simulator()
-    # the real simulator runs in this process only if its QP build here is reproducible
-    in_process = workers <= 1 and (not _is_real_simulator(sim) or portable_qp_in_process())
+    # the real simulator runs in this process only if its numerics here are pinned
+    in_process = workers <= 1 and (not _is_real_simulator(sim) or not numerics_problems())
     tasks = [Task(i, s.to_dict(), root, spec.n_legs, key, sim) for i, s in enumerate(scenarios)]
     records: dict[int, dict[str, Any]] = {}
     for task in tasks:
@@ -183,7 +187,7 @@ def generate(robot: str, preset_name: str = "small", workers: int = 1,
         except BrokenProcessPool as exc:
             raise SymbenchError(f"a worker process died ({exc}) with {len(records)} of "
                                 f"{len(tasks)} trajectories done; run again to resume (a script "
-                                "that calls generate() with workers > 1 needs an "
+                                "that calls generate() needs an "
                                 "`if __name__ == '__main__':` guard)") from None
     seconds = time.perf_counter() - start
     grid_doc = grid.grid(order) if id_override is None else {"scenarios": len(tasks)}
