@@ -9,18 +9,20 @@ from __future__ import annotations
 
 import json
 import sys
+import warnings
 
 import click
 from rich.console import Console
 from rich.table import Table
+from rich.text import Text
 
 from symbench import __version__
 from symbench.core.entries import describe
 from symbench.core.errors import SymbenchError, UnknownNameError
 from symbench.core.lazy_group import LazyGroup
 from symbench.core.paths import dataset_ids
-from symbench.core.plugins import get_host
-from symbench.core.registry import KINDS, collect
+from symbench.core.plugins import duplicate, get_host
+from symbench.core.registry import KINDS, collect, names
 
 # name -> "module:attribute" of a click command, imported when first used.
 LAZY_COMMANDS: dict[str, str] = {
@@ -30,6 +32,7 @@ LAZY_COMMANDS: dict[str, str] = {
     "leaderboard": "symbench.core.leaderboard_cli:leaderboard",
     "publish": "symbench.core.leaderboard_cli:publish",
     "sweep": "symbench.core.sweep_cli:sweep",
+    "verify": "symbench.core.verify_cli:verify",
     "data": "symbench.core.data.cli:data",
     "check-equivariance": "symbench.testing.check_command:check_equivariance",
 }
@@ -38,7 +41,12 @@ stderr = Console(stderr=True)
 
 
 class SymbenchGroup(LazyGroup):
-    """The top-level group: lazily imported core commands, clear errors for unknown names."""
+    """The top-level group: lazily imported core commands, clear errors for unknown names,
+    plugin problems reported by every command."""
+
+    def __init__(self, *args, **kwargs) -> None:
+        super().__init__(*args, **kwargs)
+        self.plugin_commands: dict[str, str] = {}  # command name -> plugin that added it
 
     def resolve_command(self, ctx: click.Context, args: list[str]):
         name = args[0] if args else ""
@@ -47,10 +55,32 @@ class SymbenchGroup(LazyGroup):
         return super().resolve_command(ctx, args)
 
     def invoke(self, ctx: click.Context):
+        reported = report_plugin_problems()  # before a long command starts ...
         try:
             return super().invoke(ctx)
         except SymbenchError as exc:
             raise click.ClickException(str(exc)) from exc
+        finally:
+            report_plugin_problems(reported)  # ... and what its hooks raised meanwhile
+
+    def add_plugin_commands(self) -> None:
+        """Each plugin's `symbench_commands`, added to a scratch group of its own so that a
+        name taken by the core or another plugin is an error naming both, never a silent
+        replacement (of `publish`, say)."""
+        host = get_host()
+        scratch: dict[str, click.Group] = {}
+        host.call_each("symbench_commands",
+                       lambda plugin: {"cli": scratch.setdefault(plugin, click.Group())})
+        for plugin, group in scratch.items():
+            for name, command in group.commands.items():
+                if name in self.plugin_commands:
+                    raise duplicate("command", name, str(host.info[self.plugin_commands[name]]),
+                                    str(host.info[plugin]))
+                if name in self.commands or name in self.lazy_commands:
+                    raise duplicate("command", name, f"symbench {__version__} (core)",
+                                    str(host.info[plugin]))
+                self.add_command(command, name)
+                self.plugin_commands[name] = plugin
 
 
 @click.group(cls=SymbenchGroup, lazy_commands=LAZY_COMMANDS,
@@ -60,10 +90,13 @@ def cli() -> None:
     """Benchmark learned dynamics of symmetric legged robots."""
 
 
-def report_plugin_problems() -> None:
-    """Name every plugin that failed, on stderr, without stopping the command."""
-    for problem in get_host().problems:
-        stderr.print(f"[yellow]warning:[/] {problem}", soft_wrap=True)
+def report_plugin_problems(already: int = 0) -> int:
+    """Name every plugin that failed since the first `already` problems, one line each on
+    stderr, without stopping the command; returns how many have been reported."""
+    problems = get_host().problems
+    for problem in problems[already:]:
+        stderr.print(Text.assemble(("warning:", "yellow"), f" {problem}"), soft_wrap=True)
+    return len(problems)
 
 
 LIST_KINDS = (*KINDS, "datasets")
@@ -80,7 +113,6 @@ def list_command(kind: str, as_json: bool) -> None:
         rows = [{"name": d} for d in dataset_ids()]
     else:
         rows = [describe(e) for e in collect(kind).values()]
-    report_plugin_problems()
     if as_json:
         click.echo(json.dumps(rows, indent=2))
         return
@@ -94,12 +126,15 @@ def list_command(kind: str, as_json: bool) -> None:
 
 
 @cli.command("plugins")
-def plugins_command() -> None:
-    """Installed plugins with their distribution, version and hooks (JSON)."""
+@click.pass_context
+def plugins_command(ctx: click.Context) -> None:
+    """Installed plugins with their hooks, and every name they register, with distribution
+    and version (JSON)."""
     host = get_host()
-    for kind in KINDS:  # calling every hook surfaces plugins that raise
-        collect(kind, host)
-    click.echo(json.dumps(host.describe(), indent=2))
+    registered = names(host)  # calls every hook first, so plugins that raise are listed too
+    registered += [host.registered("command", name, plugin)
+                   for name, plugin in ctx.find_root().command.plugin_commands.items()]
+    click.echo(json.dumps({**host.describe(), "names": registered}, indent=2))
 
 
 def build_cli() -> click.Group:
@@ -107,11 +142,17 @@ def build_cli() -> click.Group:
     group = SymbenchGroup(name=cli.name, commands=dict(cli.commands), callback=cli.callback,
                           params=cli.params, help=cli.help, lazy_commands=LAZY_COMMANDS,
                           context_settings=cli.context_settings)
-    get_host().call("symbench_commands", cli=group)
+    group.add_plugin_commands()
     return group
 
 
+def show_warning(message, category, filename, lineno, file=None, line=None) -> None:
+    """Warnings on the command line are one line each (`warning: ...`), like plugin problems."""
+    stderr.print(Text.assemble(("warning:", "yellow"), f" {message}"), soft_wrap=True)
+
+
 def main() -> None:
+    warnings.showwarning = show_warning
     try:
         build_cli()(prog_name="symbench")
     except SymbenchError as exc:  # raised outside a command, e.g. while adding commands

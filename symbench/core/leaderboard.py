@@ -2,8 +2,10 @@
 
 Records are grouped by robot, split, model and backend; metrics are averaged over seeds with
 their standard deviation, and each (robot, split) table is ranked by test torque RMSE.
-Records from different dataset versions or schema versions are never mixed: comparing
-numbers from two datasets would be meaningless, so the aggregation refuses and says why.
+Records from different dataset versions are never mixed: comparing numbers from two
+datasets would be meaningless, so the aggregation refuses and says why. Schema-1 (unsealed)
+records are still shown, so that old boards can be read; publishing refuses them. Output file
+names come from record fields that the schema restricts to safe identifiers.
 """
 
 from __future__ import annotations
@@ -19,7 +21,7 @@ from symbench.core.atomic import write_text_atomic
 from symbench.core.errors import SymbenchError
 from symbench.core.leaderboard_summary import headline
 from symbench.core.plots import sample_efficiency_png
-from symbench.core.results import ResultRecord, read_record
+from symbench.core.results import RecordV1, read_display_record
 
 MIN_SEEDS = 3
 RANK_METRIC = ("torque-error", "rmse")
@@ -36,18 +38,17 @@ COLUMNS = {
 }
 
 
-def load_records(folder: Path) -> list[tuple[Path, ResultRecord]]:
+def load_records(folder: Path) -> list[tuple[Path, RecordV1]]:
     """Every *.json record in `folder` (not its subfolders, which hold checkpoints),
-    validated; sorted by path for reproducibility."""
+    validated and, from schema 2 on, matching its seal; sorted by path for reproducibility."""
     paths = sorted(Path(folder).glob("*.json"))
     if not paths:
         raise SymbenchError(f"no result records (*.json) under {folder}")
-    return [(p, read_record(p)) for p in paths]
+    return [(p, read_display_record(p)) for p in paths]
 
 
-def check_consistent(records: Iterable[tuple[Path, ResultRecord]]) -> None:
-    """One dataset content hash per robot, or an error (`read_record` already refuses a
-    foreign schema version)."""
+def check_consistent(records: Iterable[tuple[Path, RecordV1]]) -> None:
+    """One dataset content hash per robot, or an error."""
     hashes: dict[str, dict[str, Path]] = defaultdict(dict)
     for path, r in records:
         hashes[r.robot].setdefault(r.dataset.content_hash, path)
@@ -58,7 +59,7 @@ def check_consistent(records: Iterable[tuple[Path, ResultRecord]]) -> None:
                                 f"({examples}); aggregate records of one dataset version only")
 
 
-def _flat(record: ResultRecord) -> dict:
+def _flat(record: RecordV1) -> dict:
     row = {"robot": record.robot, "split": record.split, "model": record.model.name,
            "variant": record.model.variant, "backend": record.model.backend, "seed": record.seed,
            "dataset": record.dataset.id, "parameters": record.model.parameters,
@@ -69,7 +70,7 @@ def _flat(record: ResultRecord) -> dict:
     return row
 
 
-def aggregate(records: list[tuple[Path, ResultRecord]]) -> pd.DataFrame:
+def aggregate(records: list[tuple[Path, RecordV1]]) -> pd.DataFrame:
     """Mean and standard deviation over seeds per (robot, split, model, variant, backend), ranked."""
     check_consistent(records)
     runs = pd.DataFrame([_flat(r) for _, r in records])

@@ -24,9 +24,15 @@ def leaderboard(results: Path, out: Path) -> None:
 @click.argument("records", nargs=-1, required=True, type=click.Path(path_type=Path, exists=True))
 @click.option("--to", "board", type=click.Path(path_type=Path), default=Path("leaderboards"),
               show_default=True, help="The leaderboards folder to merge into.")
-def publish(records: tuple[Path, ...], board: Path) -> None:
-    """Validate RECORDS (schema, standard dataset hash, enough seeds) and merge them."""
+@click.option("--verify", "verify", default=0, show_default=True, type=click.IntRange(min=0),
+              help="Re-run this many of RECORDS (a seeded random sample) before accepting them.")
+@click.option("--verify-seed", default=0, show_default=True, type=int,
+              help="Seed of the sample that --verify re-runs.")
+def publish(records: tuple[Path, ...], board: Path, verify: int, verify_seed: int) -> None:
+    """Check RECORDS (sealed, committed, small/paper preset, registered names, standard
+    dataset hash, enough seeds) and merge them; nothing is written when one is refused."""
     from symbench.core.publish import publish as merge
 
-    for path in merge(list(records), board):
+    for path in merge(list(records), board, verify=verify, verify_seed=verify_seed,
+                      report=click.echo):
         click.echo(f"wrote {path}")

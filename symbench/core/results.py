@@ -1,44 +1,74 @@
-"""Result records: everything needed to trust and reproduce one run, validated both ways.
+"""Result records: everything needed to trust and reproduce one run, validated and sealed.
 
 A record is JSON, validated by a versioned pydantic schema when written and when read, so a
-record with a missing field, a foreign schema version or a dataset hash that does not match
-the dataset it names is refused with a message saying which.
+record with a missing field or a foreign schema version is refused with a message saying
+which. Since schema 2 a record is
+sealed: `seal` is the SHA-256 of its canonical JSON without the seal, so a value edited by
+hand is detected whenever the record is read. The seal is not a signature (anyone can re-seal
+an edited record); `symbench verify` re-runs a record to check its numbers.
+
+Names that end up in file names (robot, split, model, variant, dataset) must be safe
+identifiers, so no record can make publish or leaderboard write outside their folder.
+Schema-1 records (unsealed, without provenance) are read for display only
+(`read_display_record`); everything that trusts a record uses `read_record`.
 """
 
 from __future__ import annotations
 
+import hashlib
 import json
 from pathlib import Path
-from typing import Any, Literal
+from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError
+from pydantic import BaseModel, ConfigDict, Field, StringConstraints, ValidationError
 
 from symbench.core.atomic import write_text_atomic
 from symbench.core.errors import SymbenchError
 
-RECORD_SCHEMA_VERSION = 1
+RECORD_SCHEMA_VERSION = 2
+LEGACY_SCHEMA_VERSION = 1  # unsealed, no provenance: shown by `symbench leaderboard` only
+
+# letters, digits, '.', '_' and '-', not starting with '.': no path separators, no '..'
+IDENTIFIER = r"^[A-Za-z0-9][A-Za-z0-9._-]*$"
+Identifier = Annotated[str, StringConstraints(pattern=IDENTIFIER, max_length=100)]
+Sha256 = Annotated[str, StringConstraints(pattern=r"^[0-9a-f]{64}$")]
 
 
 class _Strict(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True)
 
 
-class ModelInfo(_Strict):
-    name: str
+class PluginInfo(_Strict):
+    """Which code built the network: enough to install the same plugin and see if it changed."""
+
+    module: str = Field(description="the module holding the model's build function")
+    distribution: str = Field(description="the installed distribution providing that module")
+    version: str
+    source_sha256: Sha256 = Field(description="SHA-256 over the plugin package's *.py files")
+
+
+class ModelInfoV1(_Strict):
+    name: Identifier
     backend: Literal["torch", "jax"]
-    view: str
-    variant: str
+    view: Identifier
+    variant: Identifier
     equivariant: bool = Field(description="whether the model claims the robot's symmetry")
     hyperparameters: dict[str, Any]
     learning_rate: float
     parameters: int = Field(ge=0, description="number of trainable parameters")
 
 
+class ModelInfo(ModelInfoV1):
+    hyperparameters: dict[str, Any] = Field(
+        description="every keyword of the build function, defaults included")
+    plugin: PluginInfo
+
+
 class DatasetInfo(_Strict):
-    id: str
-    content_hash: str = Field(min_length=64, max_length=64, description="SHA-256, hex")
+    id: Identifier
+    content_hash: Sha256
     robot_spec_hash: str
-    preset: str
+    preset: Identifier
 
 
 class SampleCounts(_Strict):
@@ -50,7 +80,7 @@ class SampleCounts(_Strict):
     test_trajectories: int = Field(ge=0)
 
 
-class TrainingInfo(_Strict):
+class TrainingInfoV1(_Strict):
     epochs: int = Field(ge=0)
     best_epoch: int = Field(ge=0)
     stopped_early: bool
@@ -58,16 +88,37 @@ class TrainingInfo(_Strict):
     batch_size: int
 
 
-class ResultRecord(_Strict):
-    schema_version: Literal[1] = RECORD_SCHEMA_VERSION
+class TrainingConfig(_Strict):
+    """The `TrainConfig` a run used, defaults resolved (everything but the progress bar)."""
+
+    seed: int
+    batch_size: int = Field(ge=1)
+    max_epochs: int = Field(ge=1)
+    stop_ratio: float
+    stop_patience: int = Field(ge=1)
+    learning_rate: float = Field(gt=0)
+    hyper: dict[str, Any] = Field(description="overrides of the build function's defaults")
+    compile: bool
+
+
+class TrainingInfo(TrainingInfoV1):
+    config: TrainingConfig
+    checkpoint_sha256: dict[str, Sha256] = Field(
+        min_length=1, description="file name -> SHA-256 of the best checkpoint's files")
+
+
+class RecordV1(_Strict):
+    """Schema 1: still readable for display, never trusted."""
+
+    schema_version: Literal[1]
     created: str = Field(description="UTC time, ISO 8601")
-    model: ModelInfo
-    robot: str
+    model: ModelInfoV1
+    robot: Identifier
     dataset: DatasetInfo
-    split: str
+    split: Identifier
     seed: int
     samples: SampleCounts
-    training: TrainingInfo
+    training: TrainingInfoV1
     metrics: dict[str, dict[str, Any]] = Field(description="evaluator name -> its metrics")
     timings_s: dict[str, float]
     hardware: dict[str, Any]
@@ -75,9 +126,28 @@ class ResultRecord(_Strict):
     git_commit: str
 
     def key(self) -> str:
-        """What identifies a run in a sweep: one record per key."""
+        """What identifies a run in a sweep: one record per key (safe as a file name)."""
         m = self.model
         return f"{self.robot}__{self.split}__{m.name}__{m.variant}__{m.backend}__seed{self.seed}"
+
+
+class RecordBody(RecordV1):
+    """A schema-2 record before it is sealed: what the runner fills in."""
+
+    schema_version: Literal[2] = RECORD_SCHEMA_VERSION
+    model: ModelInfo
+    training: TrainingInfo
+
+
+class ResultRecord(RecordBody):
+    seal: Sha256 = Field(description="SHA-256 of the canonical JSON of every other field")
+
+
+def seal_of(data: dict[str, Any]) -> str:
+    """The SHA-256 of the record's JSON data without its seal, keys sorted."""
+    body = {k: v for k, v in data.items() if k != "seal"}
+    text = json.dumps(body, sort_keys=True, separators=(",", ":"), ensure_ascii=True)
+    return hashlib.sha256(text.encode()).hexdigest()
 
 
 def _explain(error: ValidationError, source: str) -> SymbenchError:
@@ -88,39 +158,60 @@ def _explain(error: ValidationError, source: str) -> SymbenchError:
     return SymbenchError(f"invalid result record {source}: " + "; ".join(problems))
 
 
-def write_record(record: ResultRecord | dict, path: Path) -> ResultRecord:
-    """Validate, then write atomically; returns the validated record."""
+def write_record(record: RecordBody | dict, path: Path) -> ResultRecord:
+    """Validate, seal (a seal already present is recomputed), write atomically; returns the
+    sealed record."""
+    data = record.model_dump(mode="json") if isinstance(record, BaseModel) else dict(record)
+    data.pop("seal", None)
     try:
-        record = ResultRecord.model_validate(record if isinstance(record, dict) else record.model_dump())
+        body = RecordBody.model_validate(data)
     except ValidationError as exc:
         raise _explain(exc, str(path)) from None
-    write_text_atomic(path, record.model_dump_json(indent=2) + "\n")
-    return record
+    data = json.loads(body.model_dump_json())  # exactly what a reader will parse
+    data["seal"] = seal_of(data)
+    write_text_atomic(Path(path), json.dumps(data, indent=2) + "\n")
+    return ResultRecord.model_validate(data)
 
 
-def read_record(path: Path) -> ResultRecord:
-    """Read and validate a record; a foreign or broken file is a clear error."""
+def _load(path: Path) -> dict[str, Any]:
     try:
         data = json.loads(Path(path).read_text())
-    except (OSError, json.JSONDecodeError) as exc:
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
         raise SymbenchError(f"cannot read result record {path}: {exc}") from None
-    version = data.get("schema_version") if isinstance(data, dict) else None
-    if version != RECORD_SCHEMA_VERSION:
-        raise SymbenchError(f"result record {path} has schema version {version!r}; "
-                            f"this symbench reads version {RECORD_SCHEMA_VERSION}")
+    if not isinstance(data, dict):
+        raise SymbenchError(f"result record {path} is not a JSON object")
+    return data
+
+
+def _sealed(data: dict[str, Any], path: Path) -> ResultRecord:
+    if data.get("schema_version") == LEGACY_SCHEMA_VERSION:
+        raise SymbenchError(f"{path}: record is not sealed (schema {LEGACY_SCHEMA_VERSION}); re-run it")
+    if data.get("schema_version") != RECORD_SCHEMA_VERSION:
+        raise SymbenchError(f"result record {path} has schema version "
+                            f"{data.get('schema_version')!r}; this symbench reads version "
+                            f"{RECORD_SCHEMA_VERSION}")
+    if data.get("seal") != seal_of(data):
+        raise SymbenchError(f"{path}: record does not match its seal (edited after it was written)")
     try:
         return ResultRecord.model_validate(data)
     except ValidationError as exc:
         raise _explain(exc, str(path)) from None
 
 
-def check_dataset_hash(record: ResultRecord, content_hash: str, source: str = "") -> None:
-    """Refuse a record made on a different version of the dataset it names."""
-    if record.dataset.content_hash != content_hash:
-        raise SymbenchError(
-            f"result record {source or record.key()} was made on dataset {record.dataset.id} "
-            f"with content hash {record.dataset.content_hash[:12]}..., but that dataset now has "
-            f"hash {content_hash[:12]}...: regenerate the record or the dataset")
+def read_record(path: Path) -> ResultRecord:
+    """A sealed record whose content matches its seal; anything else is a clear error."""
+    return _sealed(_load(path), path)
+
+
+def read_display_record(path: Path) -> RecordV1:
+    """A sealed record, or a schema-1 one (validated, unsealed) for tables of old boards."""
+    data = _load(path)
+    if data.get("schema_version") != LEGACY_SCHEMA_VERSION:
+        return _sealed(data, path)
+    try:
+        return RecordV1.model_validate(data)
+    except ValidationError as exc:
+        raise _explain(exc, str(path)) from None
 
 
 def json_schema() -> dict[str, Any]:

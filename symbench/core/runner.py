@@ -11,13 +11,19 @@ from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from datetime import datetime, timezone
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 from symbench.core import registry
+from symbench.core.entries import ModelEntry
 from symbench.core.errors import SymbenchError, UnknownNameError
 from symbench.core.evaluation import EvaluationContext, TrainedOnSplit, run_evaluators
-from symbench.core.provenance import git_commit, hardware, library_versions
-from symbench.core.results import ResultRecord, write_record
+from symbench.core.provenance import (build_hyperparameters, checkpoint_file_hashes, git_commit,
+                                      hardware, library_versions, plugin_info)
+from symbench.core.results import RecordBody, ResultRecord, write_record
 from symbench.core.schema import VARIANTS
+
+if TYPE_CHECKING:
+    from symbench.core.training import TrainConfig
 
 # Epoch caps of the training protocol per preset (the stopping rule usually ends earlier).
 MAX_EPOCHS = {"smoke": 3, "small": 60, "paper": 500}
@@ -39,6 +45,9 @@ class RunSpec:
     workers: int = 2
     progress: bool = True
     max_epochs: int | None = None  # None: the preset's cap
+    # TrainConfig fields replacing the protocol's defaults (`symbench verify` replays a
+    # record's); seed, max_epochs and progress always come from the fields above
+    train_config: dict[str, Any] = field(default_factory=dict)
 
     def key(self) -> str:
         """Matches `ResultRecord.key()`: the variant is resolved from the registry."""
@@ -90,8 +99,20 @@ def ensure_dataset(spec: RunSpec):
     return ensure(spec.robot, spec.preset, spec.workers, show_progress=spec.progress)
 
 
+def recorded_config(config: TrainConfig, entry: ModelEntry) -> dict[str, Any]:
+    """The TrainConfig as the record keeps it: defaults resolved, the progress bar left out."""
+    from symbench.core.backends import get_backend
+
+    out = {k: v for k, v in config.to_dict().items() if k != "progress"}
+    out["learning_rate"] = config.rate_for(entry)
+    out["compile"] = (get_backend(entry.backend).default_compiled if config.compile is None
+                      else config.compile)
+    return out
+
+
 def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> ResultRecord:
     """Train and evaluate one model; writes and returns the validated record."""
+    from symbench.core.resume import BEST_DIR
     from symbench.core.training import TrainConfig, train
 
     check_names(spec)
@@ -99,8 +120,8 @@ def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> 
     timer = Timer()
     on_stage("dataset")
     dataset = timer.measure("dataset_s", ensure_dataset, spec)
-    config = TrainConfig(seed=spec.seed, max_epochs=spec.max_epochs or MAX_EPOCHS[spec.preset],
-                         progress=spec.progress)
+    config = TrainConfig(**{**spec.train_config, "seed": spec.seed, "progress": spec.progress,
+                            "max_epochs": spec.max_epochs or MAX_EPOCHS[spec.preset]})
     # per dataset version, so a regenerated dataset trains afresh instead of resuming
     checkpoints = spec.output / "checkpoints" / spec.key() / dataset.content_hash[:12]
 
@@ -115,6 +136,7 @@ def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> 
     on_stage("training")
     model, parts, (train_set, val_set, test_set) = timer.measure(
         "training_s", train_on, spec.split, entry.variant)
+    best_checkpoint = checkpoint_file_hashes(checkpoints / f"{spec.split}__{entry.variant}" / BEST_DIR)
 
     def retrain(split: str, variant: str) -> TrainedOnSplit:
         on_stage(f"training on {split} ({variant} variant)")
@@ -130,13 +152,13 @@ def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> 
     # evaluators retrain inside their own time: report each second once
     timer.timings["evaluation_s"] -= timer.timings.get("retraining_s", 0.0)
     epochs = len(model.history["train_loss"])
-    record = ResultRecord(
+    record = RecordBody(
         created=datetime.now(timezone.utc).isoformat(timespec="seconds"),
         model={"name": entry.name, "backend": entry.backend, "view": entry.view,
                "variant": entry.variant, "equivariant": entry.equivariant,
-               "hyperparameters": model.hyper,
+               "hyperparameters": build_hyperparameters(entry, config.hyper),
                "learning_rate": config.rate_for(entry),
-               "parameters": model.n_params},
+               "parameters": model.n_params, "plugin": plugin_info(entry)},
         robot=spec.robot,
         dataset={"id": dataset.id, "content_hash": dataset.content_hash,
                  "robot_spec_hash": dataset.metadata["robot_spec_hash"], "preset": spec.preset},
@@ -147,7 +169,9 @@ def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> 
         training={"epochs": epochs, "best_epoch": model.best_epoch,
                   "stopped_early": epochs < config.max_epochs,
                   "best_val_loss": float(min(model.history["val_loss"])),
-                  "batch_size": config.batch_size},
+                  "batch_size": config.batch_size,
+                  "config": recorded_config(config, entry),
+                  "checkpoint_sha256": best_checkpoint},
         metrics=metrics, timings_s=timer.timings, hardware=hardware(),
         versions=library_versions(), git_commit=git_commit(),
     )

@@ -1,6 +1,7 @@
 """Sweeps: a grid of runs that skips finished records, so an interrupted sweep resumes.
 
-A run is finished when its result record exists and validates; records are written
+A run is finished when its result record exists, validates and matches its seal (a
+schema-1 record is redone); records are written
 atomically, so a run killed half-way leaves none and is simply redone. Datasets are made
 once per robot before the runs start, so parallel runs never race to generate them.
 """

@@ -1,8 +1,9 @@
 """A trained network with its normalization: predict in N m, save and load without pickle.
 
 A saved model is a folder: `model.safetensors` (parameters under 'params/', normalization
-statistics under 'normalization/', and the JSON description as safetensors metadata, all in
-one atomically written file) and `model.json` (the same description, human-readable).
+statistics under 'normalization/', the JSON description as safetensors metadata and the
+content hash, all in one atomically written file, see `checkpoints`) and `model.json` (the
+same description, human-readable). Loading checks the hash: a damaged file is refused.
 """
 
 from __future__ import annotations
@@ -15,7 +16,7 @@ import numpy as np
 
 from symbench import __version__
 from symbench.core.backends import Predictor, get_backend
-from symbench.core.checkpoints import read_tensors, write_json, write_tensors
+from symbench.core.checkpoints import encode, read_tensors, write_json, write_tensors
 from symbench.core.entries import ModelEntry
 from symbench.core.errors import SymbenchError
 from symbench.core.model_dims import ModelDims
@@ -77,11 +78,19 @@ class TrainedModel:
                 "history": self.history, "best_epoch": self.best_epoch, "stopped": self.stopped,
                 "n_params": self.n_params, "symbench_version": __version__}
 
-    def save(self, folder: Path) -> None:
-        folder = Path(folder)
+    def _contents(self) -> tuple[dict[str, np.ndarray], dict[str, Any]]:
         arrays = {f"params/{k}": v for k, v in self.params.items()}
         arrays.update(self.normalizer.to_arrays())
-        description = self.describe()
+        return arrays, self.describe()
+
+    def sha256(self) -> str:
+        """The content hash its checkpoint carries once saved (`checkpoints.checkpoint_sha256`
+        of `model.safetensors`), computed without writing: the model's identity in records."""
+        return encode(*self._contents())[1]
+
+    def save(self, folder: Path) -> None:
+        folder = Path(folder)
+        arrays, description = self._contents()
         write_tensors(folder / TENSORS, arrays, description)
         write_json(folder / DESCRIPTION, description)
 

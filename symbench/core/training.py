@@ -5,7 +5,7 @@ Adam, batch 64, the model's learning rate, MSE on normalized targets; stop when
 or at `max_epochs`; keep the parameters with the best validation loss. Everything random
 (initialization, batch order) derives from the seed, and the batch order of epoch k depends
 on (seed, k) only, so a training resumed from its last checkpoint continues exactly as if it
-had never stopped.
+had never stopped. The checkpoint folder, and what a resumed run may trust, is `resume`'s.
 """
 
 from __future__ import annotations
@@ -19,9 +19,9 @@ from typing import Any
 import numpy as np
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
+from symbench.core import resume
 from symbench.core.arrays import ViewArrays
 from symbench.core.backends import get_backend
-from symbench.core.checkpoints import read_tensors, write_tensors
 from symbench.core.entries import ModelEntry
 from symbench.core.errors import SymbenchError
 from symbench.core.model_dims import ModelDims, dims_of
@@ -49,12 +49,13 @@ class TrainConfig:
             raise SymbenchError(f"TrainConfig.learning_rate must be positive, got {self.learning_rate}")
 
     def to_dict(self) -> dict[str, Any]:
-        return asdict(self)
+        """The settings that shape the trained model (the progress bar does not, so that a
+        model's content hash is the same with or without one)."""
+        return {k: v for k, v in asdict(self).items() if k != "progress"}
 
     def rate_for(self, entry: ModelEntry) -> float:
         """The learning rate a training of `entry` uses: this config's, else the model's."""
         return entry.learning_rate if self.learning_rate is None else self.learning_rate
-
 
 
 @dataclass
@@ -71,10 +72,6 @@ class _Progress:
     @property
     def best_val(self) -> float:
         return self.val_loss[self.best_epoch] if self.best_epoch >= 0 else math.inf
-
-
-RESUME = "resume.safetensors"  # last epoch: parameters, optimizer state, progress as metadata
-BEST_DIR = "best"  # the TrainedModel with the best validation loss so far
 
 
 def batch_order(n: int, batch_size: int, seed: int, epoch: int) -> np.ndarray:
@@ -99,13 +96,16 @@ def train(entry: ModelEntry, train: ViewArrays, val: ViewArrays, config: TrainCo
     trainer.set_data(normalizer.normalize_inputs(train.inputs), normalizer.normalize("target", train.target),
                      normalizer.normalize_inputs(val.inputs), normalizer.normalize("target", val.target))
     state, best = _Progress(), params
-    if checkpoint_dir is not None and (Path(checkpoint_dir) / RESUME).is_file():
-        state, best = _resume(Path(checkpoint_dir), identity, trainer, entry, config)
 
     def result() -> TrainedModel:
         history = {"train_loss": state.train_loss, "val_loss": state.val_loss}
         return TrainedModel(entry, dims, dict(config.hyper), normalizer, best, history,
                             state.best_epoch, config.to_dict(), state.stopped)
+
+    resumed = _resume(Path(checkpoint_dir), identity, trainer, config) if checkpoint_dir else None
+    if resumed is not None:
+        state, best = resumed
+        resume.check_best(Path(checkpoint_dir), result())
 
     with _progress_bar(config, entry) as bar:
         task = bar.add_task("train", total=config.max_epochs, completed=state.epoch,
@@ -126,7 +126,7 @@ def train(entry: ModelEntry, train: ViewArrays, val: ViewArrays, config: TrainCo
             state.epoch += 1
             state.stopped = _stop_reason(state, config)
             if checkpoint_dir is not None:
-                _save_resume(Path(checkpoint_dir), identity, state, trainer, result())
+                _save(Path(checkpoint_dir), identity, state, trainer, result())
             bar.update(task, completed=state.epoch,
                        loss=f"train {train_loss:.4g}  val {val_loss:.4g}  best {state.best_val:.4g}")
     return result()
@@ -160,7 +160,7 @@ def _identity(entry: ModelEntry, dims: ModelDims, config: TrainConfig, train: Vi
               val: ViewArrays) -> dict[str, Any]:
     """What a resume checkpoint must match: the same model, protocol and data (by content,
     so a regenerated dataset of the same size does not resume an old training)."""
-    cfg = {k: v for k, v in config.to_dict().items() if k not in ("max_epochs", "progress")}
+    cfg = {k: v for k, v in config.to_dict().items() if k != "max_epochs"}
     return {"model": entry.name, "backend": entry.backend, "variant": entry.variant,
             "dims": dims.to_dict(), "config": cfg, "n_train": len(train), "n_val": len(val),
             "data_sha256": _fingerprint(train, val)}
@@ -175,31 +175,32 @@ def _fingerprint(*parts: ViewArrays) -> str:
     return digest.hexdigest()
 
 
-def _save_resume(folder: Path, identity: dict, state: _Progress, trainer: Any,
-                 model: TrainedModel) -> None:
-    if state.best_epoch == state.epoch - 1:
-        model.save(folder / BEST_DIR)
-    arrays = {f"params/{k}": v for k, v in trainer.params().items()}
-    arrays.update({f"optimizer/{k}": v for k, v in trainer.optimizer_state().items()})
-    write_tensors(folder / RESUME, arrays, {"identity": identity, "progress": asdict(state)})
+def _save(folder: Path, identity: dict, state: _Progress, trainer: Any,
+          model: TrainedModel) -> None:
+    """The epoch's resume checkpoint; `best/` when this epoch is the best or the last, so
+    that a finished run's `best/` is the model `train` returns."""
+    improved = state.best_epoch == state.epoch - 1
+    groups = {"params": trainer.params(), "optimizer": trainer.optimizer_state(),
+              "best": model.params}
+    resume.save(folder, groups, {"identity": identity, "progress": asdict(state)},
+                model if improved or state.stopped else None)
 
 
-def _resume(folder: Path, identity: dict, trainer: Any, entry: ModelEntry, config: TrainConfig):
-    arrays, saved = read_tensors(folder / RESUME)
+def _resume(folder: Path, identity: dict, trainer: Any, config: TrainConfig):
+    """(progress, best parameters) from the newest good resume checkpoint, the trainer
+    loaded with its state; None when there is none."""
+    loaded = resume.load(folder)
+    if loaded is None:
+        return None
+    groups, saved = loaded
     if not isinstance(saved, dict) or saved.get("identity") != identity:
         raise SymbenchError(f"{folder} holds a training of another model, data or configuration; "
                             "use a fresh checkpoint folder")
     state = _Progress(**saved["progress"])
     state.stopped = _stop_reason(state, config)  # a larger max_epochs continues a capped run
-    params = _strip(arrays, "params/")
-    trainer.load_params(params)
-    trainer.load_optimizer_state(_strip(arrays, "optimizer/"))
-    best = TrainedModel.load(folder / BEST_DIR, entry).params if state.best_epoch >= 0 else params
-    return state, best
-
-
-def _strip(arrays: dict[str, np.ndarray], prefix: str) -> dict[str, np.ndarray]:
-    return {k.removeprefix(prefix): v for k, v in arrays.items() if k.startswith(prefix)}
+    trainer.load_params(groups["params"])
+    trainer.load_optimizer_state(groups["optimizer"])
+    return state, groups["best"]
 
 
 def _progress_bar(config: TrainConfig, entry: ModelEntry) -> Progress:

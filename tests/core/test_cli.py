@@ -26,7 +26,7 @@ def test_help_lists_core_commands():
 
 def test_plugins_and_list_give_json():
     described = json.loads(run("plugins").stdout)
-    assert set(described) == {"plugins", "problems"}
+    assert set(described) == {"plugins", "problems", "names"}
     assert described["problems"] == []
     assert all(p["builtin"] for p in described["plugins"] if p["distribution"] == "symbench")
     models = json.loads(run("list", "models", "--json").stdout)

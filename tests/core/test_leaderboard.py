@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import json
+
 import pytest
 
 from symbench.core.errors import SymbenchError
@@ -74,3 +76,26 @@ def test_checkpoint_files_beside_the_records_are_not_read(tmp_path, make_record)
     (tmp_path / "checkpoints" / "x" / "best").mkdir(parents=True)
     (tmp_path / "checkpoints" / "x" / "best" / "model.json").write_text('{"format": "model"}')
     assert len(load_records(tmp_path)) == 3
+
+
+
+def test_schema_1_records_are_still_shown(tmp_path, make_record, as_schema_1):
+    (tmp_path / "records").mkdir()
+    for s in range(3):
+        (tmp_path / "records" / f"r{s}.json").write_text(json.dumps(as_schema_1(make_record(seed=s))))
+    write_leaderboard(tmp_path / "records", tmp_path / "out")
+    assert "| 1 | sdnn | acc | torch | 3 |" in (tmp_path / "out" / "hexa.md").read_text()
+
+
+def test_output_names_cannot_leave_the_output_folder(tmp_path, make_record, as_schema_1):
+    """Even an unsealed schema-1 record, which no seal protects, cannot name a path."""
+    records, out = tmp_path / "a" / "records", tmp_path / "a" / "out"
+    records.mkdir(parents=True)
+    for s in range(3):
+        record = as_schema_1(make_record(seed=s))
+        record["robot"] = "../../x"
+        (records / f"r{s}.json").write_text(json.dumps(record))
+    with pytest.raises(SymbenchError, match="robot: String should match pattern"):
+        write_leaderboard(records, out)
+    assert sorted(p.relative_to(tmp_path).as_posix() for p in tmp_path.rglob("*")) == [
+        "a", "a/records", "a/records/r0.json", "a/records/r1.json", "a/records/r2.json"]

@@ -1,17 +1,15 @@
-"""Result records: validated when written and read; broken or foreign ones are refused."""
+"""Result records: validated and sealed when written, checked when read; broken, edited or
+foreign ones are refused."""
 
 from __future__ import annotations
 
-import copy
 import json
 
 import pytest
 
 from symbench.core.errors import SymbenchError
 from symbench.core.provenance import hardware, library_versions
-from symbench.core.results import check_dataset_hash, read_record, write_record
-
-HASH = "ab" * 32
+from symbench.core.results import read_display_record, read_record, seal_of, write_record
 
 
 @pytest.fixture
@@ -23,6 +21,7 @@ def test_round_trip(valid_record, tmp_path):
     path = tmp_path / "r.json"
     written = write_record(valid_record(), path)
     assert read_record(path) == written
+    assert written.seal == seal_of(json.loads(path.read_text()))
     assert written.key() == "hexa__iid__sdnn__acc__torch__seed0"
     assert not list(tmp_path.glob(".*tmp"))  # the atomic write left no temp file
 
@@ -39,6 +38,7 @@ def test_missing_field_is_rejected_by_name(valid_record, tmp_path, field):
     del record[field]
     with pytest.raises(SymbenchError, match=f"{field}: Field required"):
         write_record(record, tmp_path / "r.json")
+    record["seal"] = seal_of(record)  # sealed, so that the schema is what refuses it
     (tmp_path / "bad.json").write_text(json.dumps(record))
     with pytest.raises(SymbenchError, match=f"{field}: Field required"):
         read_record(tmp_path / "bad.json")
@@ -46,10 +46,10 @@ def test_missing_field_is_rejected_by_name(valid_record, tmp_path, field):
 
 def test_nested_missing_field_and_bad_values(valid_record, tmp_path):
     record = valid_record()
-    del record["model"]["parameters"]
-    with pytest.raises(SymbenchError, match="model.parameters: Field required"):
+    del record["model"]["plugin"]
+    with pytest.raises(SymbenchError, match="model.plugin: Field required"):
         write_record(record, tmp_path / "r.json")
-    record = copy.deepcopy(valid_record())
+    record = valid_record()
     record["model"]["backend"] = "tensorflow"
     with pytest.raises(SymbenchError, match="model.backend"):
         write_record(record, tmp_path / "r.json")
@@ -57,7 +57,48 @@ def test_nested_missing_field_and_bad_values(valid_record, tmp_path):
     record["dataset"]["content_hash"] = "short"
     with pytest.raises(SymbenchError, match="dataset.content_hash"):
         write_record(record, tmp_path / "r.json")
+    record = valid_record()
+    record["training"]["checkpoint_sha256"] = {}
+    with pytest.raises(SymbenchError, match="training.checkpoint_sha256"):
+        write_record(record, tmp_path / "r.json")
     assert not (tmp_path / "r.json").exists()
+
+
+def test_an_edited_metric_breaks_the_seal(valid_record, tmp_path):
+    path = tmp_path / "r.json"
+    write_record(valid_record(rmse=0.5), path)
+    path.write_text(path.read_text().replace('"rmse": 0.5', '"rmse": 0.05'))
+    with pytest.raises(SymbenchError) as error:
+        read_record(path)
+    assert str(error.value) == f"{path}: record does not match its seal (edited after it was written)"
+    with pytest.raises(SymbenchError, match="does not match its seal"):
+        read_display_record(path)  # not even shown
+    data = json.loads(path.read_text())
+    data["seal"] = seal_of(data)  # re-sealing is possible: `symbench verify` catches that
+    path.write_text(json.dumps(data))
+    assert read_record(path).metrics["torque-error"]["rmse"] == 0.05
+
+
+@pytest.mark.parametrize("field, value", [("robot", "../../x"), ("split", "a/b"),
+                                          ("model.name", ".hidden")])
+def test_names_must_be_safe_identifiers(valid_record, tmp_path, field, value):
+    record = valid_record()
+    where = record
+    *parents, last = field.split(".")
+    for part in parents:
+        where = where[part]
+    where[last] = value
+    with pytest.raises(SymbenchError, match=f"{field}: String should match pattern"):
+        write_record(record, tmp_path / "r.json")
+
+
+def test_schema_1_records_are_shown_but_not_trusted(valid_record, as_schema_1, tmp_path):
+    path = tmp_path / "old.json"
+    path.write_text(json.dumps(as_schema_1(valid_record())))
+    assert read_display_record(path).key() == "hexa__iid__sdnn__acc__torch__seed0"
+    with pytest.raises(SymbenchError) as error:
+        read_record(path)
+    assert str(error.value) == f"{path}: record is not sealed (schema 1); re-run it"
 
 
 def test_foreign_schema_version_and_garbage(valid_record, tmp_path):
@@ -69,10 +110,3 @@ def test_foreign_schema_version_and_garbage(valid_record, tmp_path):
     (tmp_path / "g.json").write_text("{not json")
     with pytest.raises(SymbenchError, match="cannot read result record"):
         read_record(tmp_path / "g.json")
-
-
-def test_wrong_dataset_hash_is_rejected(valid_record, tmp_path):
-    record = write_record(valid_record(), tmp_path / "r.json")
-    check_dataset_hash(record, HASH)
-    with pytest.raises(SymbenchError, match="now has hash"):
-        check_dataset_hash(record, "ef" * 32)

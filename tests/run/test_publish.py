@@ -1,51 +1,196 @@
-"""Publishing checks the schema, the standard dataset's hash and the number of seeds."""
+"""Publishing refuses every way of putting wrong numbers on a board, and writes nothing then.
+
+Acceptance is tested on records of the smoke preset (seconds to generate), which the CLI
+never publishes: the Python API takes the accepted presets as a parameter for this, and
+every other check runs as in production, against the real smoke datasets in `smoke_home`.
+Refused batches start with valid records, so publishing them before the refusal would show.
+"""
 
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import pytest
+from click.testing import CliRunner
 
-from symbench.core.errors import SymbenchError
-from symbench.core.publish import publish, standard_hash
+from symbench.core import publish as publishing, registry
+from symbench.core.cli import build_cli
+from symbench.core.data.dataset import load_dataset
+from symbench.core.data.importer import export_dataset, import_logs
+from symbench.core.data.presets import dataset_id
+from symbench.core.errors import SymbenchError, UnknownNameError
+from symbench.core.publish import publish
+from symbench.core.results import seal_of, write_record
+from symbench.core.standard_datasets import standard_hash
+
+SMOKE = ("smoke",)
+HEXA = dataset_id("hexa", "smoke")
+PATTERN = "^[A-Za-z0-9][A-Za-z0-9._-]*$"
 
 
-def write(path, record):
-    path.write_text(json.dumps(record))
-    return path
+def snapshot(folder: Path) -> dict[str, bytes | None]:
+    """Every file's bytes and every folder under `folder`, by relative path."""
+    return {p.relative_to(folder).as_posix(): p.read_bytes() if p.is_file() else None
+            for p in sorted(folder.rglob("*"))}
 
 
 @pytest.fixture
-def smoke_hash(smoke_home, tmp_path):
-    return standard_hash("hexa-climb-smoke-v3", tmp_path)
+def smoke_hash(smoke_home):
+    return standard_hash(HEXA)
 
 
-def test_three_seeds_on_the_standard_dataset_are_published(smoke_hash, make_record, tmp_path):
-    paths = [write(tmp_path / f"s{s}.json", make_record(seed=s, content_hash=smoke_hash))
-             for s in range(3)]
-    board = tmp_path / "leaderboards"
-    written = publish(paths, board)
+@pytest.fixture
+def sealed(tmp_path, make_record, smoke_hash):
+    """A sealed record file on the standard smoke dataset; `edit` changes it before sealing."""
+    def make(name: str, edit=lambda record: None, **kwargs) -> Path:
+        record = make_record(**{"content_hash": smoke_hash, **kwargs})
+        edit(record)
+        path = tmp_path / "incoming" / f"{name}.json"
+        path.parent.mkdir(exist_ok=True)
+        write_record(record, path)
+        return path
+    return make
+
+
+@pytest.fixture
+def site(tmp_path, sealed):
+    """A folder holding a board with three published seeds of hexa / iid / sdnn."""
+    site = tmp_path / "site"
+    publish([sealed(f"s{s}", seed=s) for s in range(3)], site / "leaderboards", presets=SMOKE)
+    return site
+
+
+@pytest.fixture
+def valid(sealed):
+    """Three valid seeds of a new group: a refused batch starts with them."""
+    return [sealed(f"v{s}", seed=s, split="unseen-heading") for s in range(3)]
+
+
+def assert_refused(site: Path, paths: list[Path], message: str, presets=SMOKE) -> None:
+    """Refused with exactly `message`; the board byte for byte as it was, nothing beside it."""
+    before = snapshot(site.parent)
+    with pytest.raises(SymbenchError) as error:
+        publish(paths, site / "leaderboards", presets=presets)
+    assert str(error.value) == message
+    assert snapshot(site.parent) == before
+
+
+def test_three_seeds_on_the_standard_dataset_are_published(site, valid):
+    board = site / "leaderboards"
     assert sorted(p.name for p in (board / "records").iterdir()) == [
         f"hexa__iid__sdnn__acc__torch__seed{s}.json" for s in range(3)]
-    assert board / "hexa.md" in written and "| 1 | sdnn | acc | torch | 3 |" in (board / "hexa.md").read_text()
-    publish(paths[:1], board)  # publishing the same record again changes nothing
+    assert "| 1 | sdnn | acc | torch | 3 |" in (board / "hexa.md").read_text()
+    before = snapshot(site)
+    written = publish(valid, board, presets=SMOKE)
+    assert board / "records" / "hexa__unseen-heading__sdnn__acc__torch__seed2.json" in written
+    assert "## unseen-heading" in (board / "hexa.md").read_text()
+    assert set(before) < set(snapshot(site))  # added to, nothing beside the board
+    again = snapshot(site)
+    publish(valid[:1], board, presets=SMOKE)  # publishing the same record again changes nothing
+    assert snapshot(site) == again
 
 
-def test_refusals_name_the_reason(smoke_hash, make_record, tmp_path):
-    board = tmp_path / "leaderboards"
-    two = [write(tmp_path / f"s{s}.json", make_record(seed=s, content_hash=smoke_hash))
-           for s in range(2)]
-    with pytest.raises(SymbenchError, match="would have 2 seed"):
-        publish(two, board)
-    wrong = write(tmp_path / "w.json", make_record(seed=5, content_hash="ef" * 32))
-    with pytest.raises(SymbenchError, match="now has hash"):
-        publish([wrong], board)
-    foreign = make_record(seed=6, content_hash=smoke_hash)
-    foreign["dataset"]["id"] = "my-lab-logs"
-    with pytest.raises(SymbenchError, match="not a standard dataset"):
-        publish([write(tmp_path / "f.json", foreign)], board)
-    broken = make_record(seed=7, content_hash=smoke_hash)
-    del broken["metrics"]
-    with pytest.raises(SymbenchError, match="metrics: Field required"):
-        publish([write(tmp_path / "b.json", broken)], board)
-    assert not board.exists()  # nothing was written
+def test_refuses_data_imported_under_a_standard_id(site, valid, smoke_hash, make_record,
+                                                    tmp_path, monkeypatch):
+    exported = export_dataset(load_dataset(HEXA), tmp_path / "export")
+    monkeypatch.setenv("SYMBENCH_HOME", str(tmp_path / "other-home"))
+    fake = import_logs(exported, HEXA)  # the same trajectories, but not from the generator
+    path = tmp_path / "fake.json"
+    write_record(make_record(seed=5, content_hash=fake.content_hash), path)
+    assert_refused(site, [path] + valid, (
+        f"{path}: dataset '{HEXA}' in the cache was not generated by the standard recipe "
+        "(its source is 'imported', the recipe's is 'generated'); remove it and run "
+        "`symbench data generate --robot hexa --preset smoke`"))
+
+
+def test_refuses_smoke_records(site, valid):
+    message = f"{valid[0]}: smoke-preset records are not published (this board takes small, paper)"
+    assert_refused(site, valid, message, presets=publishing.PUBLISHED_PRESETS)
+    before = snapshot(site)
+    result = CliRunner().invoke(build_cli(), ["publish", *map(str, valid), "--to",
+                                              str(site / "leaderboards")])
+    assert result.exit_code == 1
+    assert message in " ".join(result.output.split())
+    assert snapshot(site) == before
+
+
+def test_refuses_an_edited_metric(site, valid, sealed):
+    path = sealed("edited", seed=3)
+    path.write_text(path.read_text().replace('"rmse": 0.1', '"rmse": 0.01'))
+    assert_refused(site, valid + [path],
+                   f"{path}: record does not match its seal (edited after it was written)")
+
+
+def test_refuses_unsafe_names_and_writes_nothing_outside(site, valid, make_record, smoke_hash,
+                                                          tmp_path):
+    record = make_record(seed=3, content_hash=smoke_hash)
+    record["robot"] = "../../x"
+    record["seal"] = seal_of(record)
+    path = tmp_path / "escape.json"
+    path.write_text(json.dumps(record))
+    assert_refused(site, valid + [path], f"invalid result record {path}: robot: String should "
+                                         f"match pattern '{PATTERN}'")
+
+
+def test_refuses_names_that_are_not_registered(site, valid, sealed):
+    path = sealed("unknown-split", seed=3, split="iid2")
+    expected = UnknownNameError("split", "iid2", registry.collect("splits"))
+    assert_refused(site, valid + [path], f"{path}: {expected}")
+
+
+def test_refuses_records_of_a_dirty_tree(site, valid, sealed):
+    commit = "1" * 40 + "+dirty"
+    path = sealed("dirty", lambda r: r.update(git_commit=commit), seed=3)
+    assert_refused(site, valid + [path], (
+        f"{path}: made from a working tree with uncommitted changes (git_commit {commit}), so "
+        "nobody can re-run it; commit and re-run it"))
+
+
+def test_refuses_unsealed_schema_1_records(site, valid, make_record, as_schema_1, smoke_hash,
+                                           tmp_path):
+    path = tmp_path / "old.json"
+    path.write_text(json.dumps(as_schema_1(make_record(seed=3, content_hash=smoke_hash))))
+    assert_refused(site, valid + [path], f"{path}: record is not sealed (schema 1); re-run it")
+
+
+def test_refuses_another_dataset(site, valid, sealed, smoke_hash):
+    other = sealed("other-hash", seed=3, content_hash="ef" * 32)
+    assert_refused(site, valid + [other], (
+        f"{other}: made on dataset {HEXA} with content hash efefefefefef..., but the standard "
+        f"dataset this code generates has hash {smoke_hash[:12]}...; re-run it on the standard "
+        "dataset"))
+    foreign = sealed("foreign", lambda r: r["dataset"].update(id="my-lab-logs"), seed=3)
+    assert_refused(site, valid + [foreign], (
+        f"{foreign}: dataset 'my-lab-logs' is not the standard dataset of hexa on preset smoke "
+        f"('{HEXA}'); records on imported data go on boards of their own (symbench leaderboard)"))
+
+
+def test_refuses_too_few_seeds_and_a_changed_published_record(site, valid, sealed):
+    two = [sealed(f"two{s}", seed=s, split="unseen-rotation") for s in range(2)]
+    assert_refused(site, valid + two, (
+        f"{two[0]}: hexa / unseen-rotation / sdnn / acc / torch would have 2 seed(s); publish "
+        "at least 3 seeds of a run together"))
+    changed = sealed("changed", seed=0, rmse=0.3)
+    assert_refused(site, valid + [changed], (
+        f"{changed}: a different record for hexa__iid__sdnn__acc__torch__seed0 is already "
+        "published; remove it from the board's records first"))
+
+
+def test_refuses_a_board_holding_an_edited_record(site, valid):
+    published = site / "leaderboards" / "records" / "hexa__iid__sdnn__acc__torch__seed1.json"
+    published.write_text(published.read_text().replace('"rmse": 0.1', '"rmse": 0.01'))
+    assert_refused(site, valid,
+                   f"{published}: record does not match its seal (edited after it was written)")
+
+
+def test_a_failure_while_building_leaves_the_board_as_it_was(site, valid, monkeypatch):
+    def half_written(results: Path, out: Path) -> list[Path]:
+        (out / "summary.md").write_text("half")
+        raise OSError("disk full")
+
+    monkeypatch.setattr(publishing, "write_leaderboard", half_written)
+    before = snapshot(site)
+    with pytest.raises(OSError, match="disk full"):
+        publish(valid, site / "leaderboards", presets=SMOKE)
+    assert snapshot(site) == before

@@ -2,11 +2,19 @@
 
 from __future__ import annotations
 
+import hashlib
+from pathlib import Path
+
 import pytest
 from click.testing import CliRunner
 
+import symbench
+from symbench.core import registry
 from symbench.core.cli import build_cli
+from symbench.core.data.dataset import load_dataset
+from symbench.core.data.presets import dataset_id
 from symbench.core.errors import SymbenchError, UnknownNameError
+from symbench.core.provenance import build_hyperparameters, plugin_info
 from symbench.core.results import read_record
 from symbench.core.runner import RunSpec, run
 
@@ -22,7 +30,7 @@ def test_every_model_on_every_robot_writes_a_valid_record(smoke_home, tmp_path, 
                    output=tmp_path, progress=False, max_epochs=2)
     record = run(spec)
     assert read_record(spec.record_path) == record
-    assert record.dataset.id == f"{robot}-climb-smoke-v3"
+    assert record.dataset.id == dataset_id(robot, "smoke")
     assert record.samples.train > 0 and record.samples.test > 0
     assert record.model.parameters > 0
     metrics = record.metrics
@@ -78,3 +86,36 @@ def test_timings_count_each_second_once(smoke_home, tmp_path):
     timings = record.timings_s
     assert timings["retraining_s"] > 0 and timings["evaluation_s"] >= 0
     assert record.training.stopped_early == (record.training.epochs < 2)
+
+
+def sha256_of(data: bytes) -> str:
+    return hashlib.sha256(data).hexdigest()
+
+
+def test_a_record_carries_what_it_takes_to_rerun_it(smoke_home, tmp_path):
+    spec = RunSpec(model="sdnn", robot="hexa", preset="smoke", evaluators=("torque-error",),
+                   output=tmp_path, progress=False, max_epochs=2)
+    record = run(spec)
+    package = Path(symbench.__file__).parent / "plugins" / "torch_models"
+    sources = "".join(f"{p.relative_to(package).as_posix()}\0{sha256_of(p.read_bytes())}\n"
+                      for p in sorted(package.rglob("*.py")))
+    assert record.model.plugin.model_dump() == {
+        "module": "symbench.plugins.torch_models.sdnn", "distribution": "symbench",
+        "version": symbench.__version__, "source_sha256": sha256_of(sources.encode())}
+    assert record.model.hyperparameters == {"latent": 128, "mlp_layers": 2, "steps": 2}
+    assert record.training.config.model_dump() == {
+        "seed": 0, "batch_size": 64, "max_epochs": 2, "stop_ratio": 0.7, "stop_patience": 5,
+        "learning_rate": 5e-4, "hyper": {}, "compile": False}
+    best = next((tmp_path / "checkpoints" / spec.key()).glob("*/iid__acc/best"))
+    assert record.training.checkpoint_sha256 == {
+        p.name: sha256_of(p.read_bytes()) for p in sorted(best.iterdir())}
+    assert set(record.training.checkpoint_sha256) >= {"model.safetensors"}
+    assert record.dataset.content_hash == load_dataset(record.dataset.id).content_hash
+
+
+def test_provenance_of_a_third_party_model_and_of_overridden_hyperparameters():
+    entry = registry.model("leg-attention", "torch")  # examples/symbench-example-plugin
+    info = plugin_info(entry)
+    assert (info["distribution"], info["version"]) == ("symbench-example-plugin", "0.1.0")
+    assert build_hyperparameters(registry.model("sdnn"), {"latent": 16}) == {
+        "latent": 16, "mlp_layers": 2, "steps": 2}

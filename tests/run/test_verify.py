@@ -1,0 +1,127 @@
+"""`symbench verify` reproduces a fresh record exactly and names every metric that differs;
+`publish --verify` re-runs a seeded sample of the incoming records before accepting them.
+
+The records are real smoke runs (torque-error only, 2 epochs). Their git commit is set to a
+clean one, since this test may run in a working tree with uncommitted changes.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from symbench.core import runner
+from symbench.core.cli import build_cli
+from symbench.core.errors import SymbenchError
+from symbench.core.publish import publish
+from symbench.core.results import read_record, write_record
+from symbench.core.runner import RunSpec, run
+from symbench.core.verify import Tolerance, sample
+
+SMOKE = ("smoke",)
+
+
+@pytest.fixture(scope="module")
+def records(smoke_home, tmp_path_factory) -> list[Path]:
+    """Three seeds of sdnn on hexa, as a contributor would send them."""
+    out = tmp_path_factory.mktemp("contribution")
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(runner, "git_commit", lambda: "1" * 40)
+        specs = [RunSpec(model="sdnn", robot="hexa", preset="smoke", seed=s,
+                         evaluators=("torque-error",), output=out, progress=False, max_epochs=2)
+                 for s in range(3)]
+        for spec in specs:
+            run(spec)
+    return [spec.record_path for spec in specs]
+
+
+def edited(path: Path, folder: Path) -> Path:
+    """A copy of the record with its RMSE raised by 1 %, sealed again (a seal is no signature)."""
+    data = json.loads(path.read_text())
+    data["metrics"]["torque-error"]["rmse"] *= 1.01
+    copy = folder / path.name
+    write_record(data, copy)
+    return copy
+
+
+def verify(*args: str):
+    return CliRunner().invoke(build_cli(), ["verify", *args])
+
+
+def test_a_fresh_record_reproduces_exactly(records):
+    result = verify(str(records[0]), "--json")
+    assert result.exit_code == 0, result.output
+    [report] = json.loads(result.stdout)
+    assert report["agree"] and report["tolerance"] == {"rtol": 1e-6, "atol": 1e-12}
+    recorded = read_record(records[0]).metrics["torque-error"]
+    checks = {c["name"]: c for c in report["metrics"]}
+    assert set(checks) == {f"torque-error.{name}" for name in recorded}
+    assert all(c["reproduced"] == c["recorded"] for c in checks.values())  # bit for bit
+    text = verify(str(records[0]))
+    assert text.exit_code == 0
+    assert "agreement: |reproduced - recorded| <= 1e-12 + 1e-06 x |recorded|" in text.stdout
+    assert f"all {len(checks)} values agree" in text.stdout
+
+
+def test_an_edited_and_resealed_metric_is_named(records, tmp_path):
+    path = edited(records[0], tmp_path)
+    result = verify(str(path), "--json")
+    assert result.exit_code == 1
+    [report] = json.loads(result.stdout)
+    assert [c["name"] for c in report["metrics"] if not c["agree"]] == ["torque-error.rmse"]
+    text = verify(str(path))
+    assert text.exit_code == 1
+    assert "1 of 6 values disagree: torque-error.rmse" in " ".join(text.stdout.split())
+
+
+def test_tolerance_is_relative_plus_absolute():
+    tolerance = Tolerance(rtol=1e-6, atol=1e-12)
+    assert tolerance.agree(1.0, 1.0 + 1e-7) and not tolerance.agree(1.0, 1.0 + 1e-5)
+    assert tolerance.agree(0.0, 1e-13) and not tolerance.agree(0.0, 1e-11)
+    assert tolerance.agree(None, None) and not tolerance.agree(None, 0.0)
+    assert not tolerance.agree(True, False)
+
+
+def test_publish_verifies_a_seeded_sample(records, tmp_path):
+    messages: list[str] = []
+    board = tmp_path / "leaderboards"
+    publish(records, board, presets=SMOKE, verify=1, verify_seed=0, report=messages.append)
+    [chosen] = sample(records, 1, seed=0)
+    assert messages[0] == f"verifying 1 of 3 records (sample seed 0): {chosen}"
+    assert messages[1].startswith(f"{chosen}: all 6 values reproduce")
+    assert len(list((board / "records").glob("*.json"))) == 3
+
+
+def test_publish_refuses_a_sample_that_does_not_reproduce(records, tmp_path):
+    folder = tmp_path / "contribution"
+    folder.mkdir()
+    paths = [folder / p.name for p in records]
+    for source, copy in zip(records, paths):
+        copy.write_bytes(source.read_bytes())
+    [chosen] = sample(paths, 1, seed=0)
+    original = read_record(chosen).metrics["torque-error"]["rmse"]
+    edited(chosen, folder)
+    board = tmp_path / "leaderboards"
+    with pytest.raises(SymbenchError) as error:
+        publish(paths, board, presets=SMOKE, verify=1, verify_seed=0)
+    assert str(error.value) == (
+        f"{chosen}: does not reproduce: torque-error.rmse recorded "
+        f"{read_record(chosen).metrics['torque-error']['rmse']!r}, reproduced {original!r} "
+        f"(agreement: {Tolerance()})")
+    assert not board.exists() and [p.name for p in tmp_path.iterdir()] == ["contribution"]
+
+
+def test_a_record_of_another_dataset_version_is_not_re_run(records, tmp_path):
+    data = json.loads(records[0].read_text())
+    data["dataset"]["content_hash"] = "ef" * 32
+    path = tmp_path / records[0].name
+    write_record(data, path)
+    result = verify(str(path))
+    assert result.exit_code == 1
+    here = read_record(records[0]).dataset.content_hash
+    assert (f"{path}: made on dataset {data['dataset']['id']} with content hash efefefefefef..., "
+            f"but this machine generates hash {here[:12]}...; it cannot be reproduced here"
+            ) in " ".join(result.output.split())
