@@ -14,12 +14,15 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
+from symbench import __version__, hookimpl
 from symbench.core import publish as publishing, registry
-from symbench.core.cli import build_cli
+from symbench.core.cli import build_cli, main
 from symbench.core.data.dataset import load_dataset
 from symbench.core.data.importer import export_dataset, import_logs
 from symbench.core.data.presets import dataset_id
+from symbench.core.entries import ModelEntry
 from symbench.core.errors import SymbenchError, UnknownNameError
+from symbench.core.plugins import PluginHost, PluginProblem, set_host
 from symbench.core.publish import publish
 from symbench.core.results import seal_of, write_record
 from symbench.core.standard_datasets import standard_hash
@@ -194,3 +197,59 @@ def test_a_failure_while_building_leaves_the_board_as_it_was(site, valid, monkey
     with pytest.raises(OSError, match="disk full"):
         publish(valid, site / "leaderboards", presets=SMOKE)
     assert snapshot(site) == before
+
+
+# The plugin host's guards hold at publish time too: a hijacked or missing model name is
+# refused by name, and the board stays as it was.
+
+class _EvilSdnn:
+    """A third party's model under the built-in's name."""
+
+    @hookimpl
+    def symbench_models(self):
+        return [ModelEntry("sdnn", "torch", "leg_grouped", "acc", True, build=lambda dims: None)]
+
+
+@pytest.fixture
+def builtins_host():
+    host = PluginHost()
+    host.load_entry_points("none")
+    set_host(host)
+    yield host
+    set_host(None)
+
+
+def test_refuses_while_a_second_distribution_registers_the_models_name(site, valid,
+                                                                        builtins_host):
+    builtins_host.register(_EvilSdnn(), "evil_models", distribution="evil-dist", version="6.6.6")
+    assert_refused(site, valid, (
+        f"{valid[0]}: model 'sdnn/torch' is registered twice: by plugin 'torch_models' "
+        f"(symbench {__version__}) and by plugin 'evil_models' (evil-dist 6.6.6); uninstall "
+        "one or leave it out of SYMBENCH_PLUGINS"))
+
+
+def test_refuses_a_model_whose_plugin_failed_to_import(site, valid, sealed, builtins_host):
+    problem = PluginProblem("ghost", "import", "ModuleNotFoundError: No module named 'ghost'")
+    builtins_host.report(problem)
+    ghost = sealed("ghost", model="ghost-net")
+    assert_refused(site, valid + [ghost], (
+        f"{ghost}: unknown model 'ghost-net' (known: ffnn, ffnn-leg, gnn, "
+        "sdgnn, sdnn); plugin 'ghost' (ModuleNotFoundError: No module named 'ghost') failed "
+        "to import and may provide it"))
+
+
+def test_refuses_to_start_with_an_unknown_plugin_in_symbench_plugins(site, valid, monkeypatch,
+                                                                      capsys):
+    monkeypatch.setenv("SYMBENCH_PLUGINS", "exmple_models")
+    monkeypatch.setattr("sys.argv", ["symbench", "publish", *map(str, valid),
+                                     "--to", str(site / "leaderboards")])
+    set_host(None)
+    before = snapshot(site.parent)
+    with pytest.raises(SystemExit) as exit_:
+        main()
+    assert exit_.value.code == 1
+    assert capsys.readouterr().err.strip() == (
+        "error: SYMBENCH_PLUGINS: unknown plugin 'exmple_models'; did you mean example_models, "
+        "jax_models, torch_models? "
+        "(known: evaluators, example_models, jax_models, robots, splits, torch_models)")
+    assert snapshot(site.parent) == before
