@@ -1,19 +1,18 @@
 """The standard datasets are byte-identical on every x86-64 CPU.
 
-The smoke datasets of all three robots are regenerated and compared with content hashes
-committed beside this file (made on another machine), once with this process as it is and
+The smoke datasets of all three robots are regenerated and compared with the content hashes
+committed in `symbench.core.data.reference_hashes` (made on another machine), once with this process as it is and
 once from a `symbench` process forced onto other CPU kernels (OpenBLAS, numpy's SIMD loops,
 glibc's libm, pyarrow): the generator's workers pin their own numerics, so neither the CPU
 nor the caller's environment may change a bit. A machine whose CPU picks other kernels than
 the one the hashes were made on therefore fails here, whatever that CPU is.
 
 After a deliberate change to the data (bump DATASET_VERSION) or to a pinned library
-version, regenerate and update `reference_hashes.json` with the printed hashes.
+version, regenerate and update `reference_hashes` with the printed hashes.
 """
 
 from __future__ import annotations
 
-import json
 import os
 import subprocess
 import sys
@@ -22,10 +21,10 @@ from pathlib import Path
 import pytest
 
 from symbench.core.data.determinism import numerics_problems, pinned_environment
+from symbench.core.data.metadata import library_versions
 from symbench.core.data.presets import dataset_id
+from symbench.core.data.reference_hashes import LIBRARY_VERSIONS, reference_hash
 from symbench.core.errors import SymbenchError
-
-REFERENCE = json.loads((Path(__file__).with_name("reference_hashes.json")).read_text())
 ROBOTS = ("magneto", "hexa", "nona")
 OTHER_KERNELS = {
     "OPENBLAS_CORETYPE": "Sandybridge",  # FMA-free AVX kernels, unlike both the pin and default
@@ -38,8 +37,10 @@ OTHER_KERNELS = {
 
 def _expected(robot: str) -> str:
     did = dataset_id(robot, "smoke")
-    assert did in REFERENCE, f"no reference hash for {did}: regenerate and add it"
-    return REFERENCE[did]
+    assert library_versions() == LIBRARY_VERSIONS, "the installed libraries are not the pinned ones"
+    expected = reference_hash(did, LIBRARY_VERSIONS)
+    assert expected, f"no reference hash for {did}: regenerate and add it"
+    return expected
 
 
 @pytest.mark.parametrize("robot", ROBOTS)
@@ -60,7 +61,9 @@ def test_smoke_dataset_matches_from_a_caller_on_other_kernels(robot, tmp_path):
                           "--workers", "2", "--no-progress"],
                          env=env, capture_output=True, text=True, timeout=600)
     assert out.returncode == 0, out.stderr
-    assert f"content hash {_expected(robot)}" in out.stdout.replace("\n", " "), out.stdout
+    printed = out.stdout.replace("\n", " ")
+    assert f"content hash {_expected(robot)}" in printed, out.stdout
+    assert "matches the reference hash committed with symbench" in printed
 
 
 def test_the_real_simulator_refuses_unpinned_numerics(tmp_path, monkeypatch):

@@ -107,6 +107,20 @@ def test_refuses_data_imported_under_a_standard_id(site, valid, smoke_hash, make
         "`symbench data generate --robot hexa --preset smoke`"))
 
 
+def test_refuses_a_cached_dataset_that_differs_from_the_committed_reference(site, valid,
+                                                                           smoke_hash,
+                                                                           monkeypatch):
+    """A cache that passes the recipe check but holds other bytes (forged metadata, or a
+    platform that breaks the same-bytes guarantee) is caught by the reference hash."""
+    from symbench.core.data import reference_hashes
+
+    monkeypatch.setitem(reference_hashes.CONTENT_HASHES, HEXA, "0" * 64)
+    assert_refused(site, valid, (
+        f"{valid[0]}: dataset '{HEXA}' in the cache has content hash {smoke_hash[:12]}..., but "
+        "this code generates 000000000000... (the committed reference) on every x86-64 CPU; "
+        "remove it and run `symbench data generate --robot hexa --preset smoke`"))
+
+
 def test_refuses_smoke_records(site, valid):
     message = f"{valid[0]}: smoke-preset records are not published (this board takes small, paper)"
     assert_refused(site, valid, message, presets=publishing.PUBLISHED_PRESETS)

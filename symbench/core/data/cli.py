@@ -45,6 +45,22 @@ def generate_command(robot: str, preset_name: str, workers: int, progress: bool)
                   f"{report.n_simulated} simulated in {report.seconds:.1f} s, {kept} kept")
     _print_failures(report.failures)
     console.print(f"  content hash {report.content_hash}")
+    _print_reference(report.dataset_id, report.content_hash)
+
+
+def _print_reference(dataset_id: str, content_hash: str) -> None:
+    """Whether this machine made the same bytes as the reference committed with symbench."""
+    from symbench.core.data.metadata import library_versions
+    from symbench.core.data.reference_hashes import reference_hash
+
+    expected = reference_hash(dataset_id, library_versions())
+    if expected is None:
+        console.print("  no reference hash for this id and these library versions")
+    elif expected == content_hash:
+        console.print("  matches the reference hash committed with symbench")
+    else:
+        console.print(f"  [yellow]warning:[/] the reference hash committed with symbench is "
+                      f"{expected}: this machine generated different data", soft_wrap=True)
 
 
 @data.command("info")
