@@ -35,6 +35,12 @@ def verify(records: tuple[Path, ...], rtol: float, atol: float, workers: int, as
     """Re-run each RECORD (its dataset, seed, hyper-parameters and evaluators) and compare
     every metric; exits with 1 when any disagrees."""
     tolerance = Tolerance(rtol, atol)
+    import symbench.core.backends.torch_backend  # noqa: F401  (sets its thread count)
+    from symbench.core.training_kernels import training_kernel_problems
+
+    for problem in training_kernel_problems():  # then bit-for-bit agreement is not expected
+        click.echo(f"warning: {problem}; training may not reproduce records made elsewhere",
+                   err=True)
     with tempfile.TemporaryDirectory(prefix="symbench-verify-") as workdir:
         results = [verify_record(path, Path(workdir), tolerance, workers) for path in records]
     if as_json:

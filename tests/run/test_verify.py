@@ -125,3 +125,23 @@ def test_a_record_of_another_dataset_version_is_not_re_run(records, tmp_path):
     assert (f"{path}: made on dataset {data['dataset']['id']} with content hash efefefefefef..., "
             f"but this machine generates hash {here[:12]}...; it cannot be reproduced here"
             ) in " ".join(result.output.split())
+
+
+def test_a_caller_on_other_torch_kernels_still_reproduces_the_record(records, smoke_home):
+    """symbench holds torch to its AVX2 kernels whatever the caller's environment says, so a
+    maintainer on another CPU reproduces the record (unpinned, these variables change 11 of
+    14 values of such a record)."""
+    import os
+    import subprocess
+    import sys
+
+    from symbench.core.training_kernels import _cpu_has_avx2
+
+    assert _cpu_has_avx2(), "the reference kernels need AVX2"
+    env = {**os.environ, "ATEN_CPU_CAPABILITY": "default", "MKL_CBWR": "COMPATIBLE",
+           "SYMBENCH_HOME": str(smoke_home), "MUJOCO_GL": "disable"}
+    cli = Path(sys.executable).with_name("symbench")
+    out = subprocess.run([str(cli), "verify", str(records[0])], env=env, capture_output=True,
+                         text=True, timeout=600)
+    assert out.returncode == 0, out.stdout + out.stderr
+    assert "warning" not in out.stderr and "values agree" in out.stdout
