@@ -1,13 +1,50 @@
-"""Builders shared by all tests."""
+"""Builders shared by all tests, and the Hypothesis profiles of the property suite
+(tests/properties): a bounded number of examples per property in the default suite, many more
+under `-m slow`, which selects the same properties again.
+
+    pytest tests/properties              # DEFAULT_EXAMPLES each
+    pytest tests/properties -m slow      # SLOW_EXAMPLES each
+"""
 
 from __future__ import annotations
 
-import pytest
+from pathlib import Path
 
+import pytest
+from hypothesis import HealthCheck, settings
+from synthetic_raw import fake_simulate
+
+from symbench.core.data.generation import generate
 from symbench.core.data.presets import dataset_id
 from symbench.core.provenance import hardware, library_versions
 
 HASH = "ab" * 32
+DEFAULT_EXAMPLES = 50
+SLOW_EXAMPLES = 500
+PROPERTIES = Path(__file__).parent / "properties"
+
+for _name, _examples in (("symbench-default", DEFAULT_EXAMPLES), ("symbench-slow", SLOW_EXAMPLES)):
+    # no deadline: examples write files, and the machine may be busy
+    settings.register_profile(_name, max_examples=_examples, deadline=None,
+                              suppress_health_check=[HealthCheck.too_slow])
+
+
+def _slow_run(config: pytest.Config) -> bool:
+    """Whether `-m` selects the slow tests (the default `-m 'not slow'` does not)."""
+    expression = config.getoption("markexpr") or ""
+    return "slow" in expression and "not slow" not in expression
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    settings.load_profile("symbench-slow" if _slow_run(config) else "symbench-default")
+
+
+@pytest.hookimpl(tryfirst=True)  # before `-m` deselects by marker
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    if _slow_run(config):
+        for item in items:
+            if item.path.is_relative_to(PROPERTIES):
+                item.add_marker(pytest.mark.slow)
 
 
 def record_dict(robot: str = "hexa", split: str = "iid", model: str = "sdnn",
@@ -43,6 +80,20 @@ def record_dict(robot: str = "hexa", split: str = "iid", model: str = "sdnn",
         "versions": library_versions(),
         "git_commit": "0" * 40,
     }
+
+
+@pytest.fixture
+def home(tmp_path, monkeypatch):
+    """A private, empty $SYMBENCH_HOME for one test."""
+    monkeypatch.setenv("SYMBENCH_HOME", str(tmp_path / "home"))
+    return tmp_path / "home"
+
+
+@pytest.fixture
+def smoke_hexa(home):
+    """hexa's smoke dataset in `home`, simulated by the stand-in: the same files and id as the
+    real one, in a fraction of a second."""
+    return generate("hexa", "smoke", simulator=fake_simulate, show_progress=False)
 
 
 @pytest.fixture

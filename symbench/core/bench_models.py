@@ -19,6 +19,7 @@ from rich.table import Table
 
 from symbench.core import registry
 from symbench.core.backends import get_backend
+from symbench.core.cli_types import POSITIVE
 from symbench.core.entries import BACKENDS
 from symbench.core.model_dims import dims_of
 from symbench.core.normalization import Normalizer
@@ -78,7 +79,8 @@ def measure(entry, views, seconds: float) -> dict[str, Any]:
 @click.option("--models", "names", default="ffnn,ffnn-leg,gnn,sdgnn,sdnn", show_default=True,
               help="Comma-separated model names.")
 @click.option("--backends", default=",".join(BACKENDS), show_default=True)
-@click.option("--seconds", default=2.0, show_default=True, help="Timing window per figure.")
+@click.option("--seconds", default=2.0, show_default=True, type=POSITIVE,
+              help="Timing window per figure.")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON instead of a table.")
 def bench_models(robot_name: str, names: str, backends: str, seconds: float, as_json: bool) -> None:
     """Training samples/s (batch 64) and batch-1 inference latency per model and backend."""

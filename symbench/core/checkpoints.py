@@ -24,6 +24,7 @@ from safetensors.numpy import load, save
 
 from symbench.core.atomic import write_bytes_atomic
 from symbench.core.errors import SymbenchError
+from symbench.core.jsonfile import loads, one_line
 
 METADATA_KEY = "symbench"
 HASH_KEY = "sha256"
@@ -56,9 +57,9 @@ def read_tensors(path: Path) -> tuple[dict[str, np.ndarray], Any]:
     """The arrays and the JSON metadata, once the content hash is checked."""
     raw, header, _ = _open(Path(path))
     try:
-        return load(raw), json.loads(header[_META][METADATA_KEY])
-    except (SafetensorError, KeyError, ValueError) as exc:  # only a forged hash gets here
-        raise CheckpointError(f"checkpoint {path} is malformed ({_one_line(exc)})") from None
+        return load(raw), loads(header[_META][METADATA_KEY])
+    except (SafetensorError, KeyError, TypeError, ValueError) as exc:  # only a forged hash gets here
+        raise CheckpointError(f"checkpoint {path} is malformed ({one_line(exc)})") from None
 
 
 def checkpoint_sha256(path: Path) -> str:
@@ -81,10 +82,10 @@ def _open(path: Path) -> tuple[bytes, dict[str, Any], str]:
     except FileNotFoundError:
         raise CheckpointError(f"checkpoint {path} does not exist") from None
     except OSError as exc:
-        raise CheckpointError(f"checkpoint {path} cannot be read ({_one_line(exc)})") from None
+        raise CheckpointError(f"checkpoint {path} cannot be read ({one_line(exc)})") from None
     except ValueError as exc:
         raise CheckpointError(f"checkpoint {path} is not a readable safetensors file "
-                              f"({_one_line(exc)})") from None
+                              f"({one_line(exc)})") from None
     except (KeyError, TypeError, AttributeError):
         raise CheckpointError(f"checkpoint {path} carries no content hash (damaged, or "
                               "written before checkpoints were hashed)") from None
@@ -98,7 +99,7 @@ def _split(raw: bytes) -> tuple[dict[str, Any], bytes]:
     size = int.from_bytes(raw[:8], "little")
     if len(raw) < 8 + size:
         raise ValueError("the file is shorter than its header")
-    header = json.loads(raw[8:8 + size])
+    header = loads(raw[8:8 + size])
     if not isinstance(header, dict):
         raise ValueError("its header is not a JSON object")
     return header, raw[8 + size:]
@@ -120,7 +121,3 @@ def _damage(header: dict[str, Any], data: bytes) -> str:
     if len(data) < size:
         return f"truncated ({len(data)} of {size} data bytes)"
     return "damaged (its content does not match its SHA-256)"
-
-
-def _one_line(exc: BaseException) -> str:
-    return " ".join(str(exc).split())

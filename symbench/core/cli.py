@@ -2,7 +2,10 @@
 
 Core commands live next to the code they drive and are imported only when invoked (so that
 `symbench --help` does not import torch or JAX); plugins add commands through the
-`symbench_commands` hook. A `SymbenchError` becomes one clear line, never a traceback.
+`symbench_commands` hook. Every error is one line on stderr, never a traceback (unless
+`--debug`): exit status 2 for a malformed command line (click's usage errors: an unknown
+command or option, a value of the wrong type or out of range), 1 for a command that failed
+(a `SymbenchError`, or an unexpected exception, reported as an internal error).
 """
 
 from __future__ import annotations
@@ -19,6 +22,7 @@ from rich.text import Text
 from symbench import __version__
 from symbench.core.entries import describe
 from symbench.core.errors import SymbenchError, UnknownNameError
+from symbench.core.jsonfile import one_line
 from symbench.core.lazy_group import LazyGroup
 from symbench.core.paths import dataset_ids
 from symbench.core.plugins import duplicate, get_host
@@ -58,8 +62,15 @@ class SymbenchGroup(LazyGroup):
         reported = report_plugin_problems()  # before a long command starts ...
         try:
             return super().invoke(ctx)
-        except SymbenchError as exc:
-            raise click.ClickException(str(exc)) from exc
+        except (click.ClickException, click.exceptions.Exit, click.Abort):
+            raise  # click's own: usage errors (2), exit statuses, Ctrl-C
+        except Exception as exc:
+            if ctx.params.get("debug"):
+                raise
+            if isinstance(exc, SymbenchError):
+                raise click.ClickException(str(exc)) from exc
+            raise click.ClickException(f"internal error: {one_line(f'{type(exc).__name__}: {exc}')}"
+                                       " (run with --debug for the traceback)") from exc
         finally:
             report_plugin_problems(reported)  # ... and what its hooks raised meanwhile
 
@@ -86,7 +97,8 @@ class SymbenchGroup(LazyGroup):
 @click.group(cls=SymbenchGroup, lazy_commands=LAZY_COMMANDS,
              context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, prog_name="symbench")
-def cli() -> None:
+@click.option("--debug", is_flag=True, help="Show the traceback of any error.")
+def cli(debug: bool) -> None:
     """Benchmark learned dynamics of symmetric legged robots."""
 
 

@@ -7,7 +7,11 @@ from collections.abc import Iterable
 
 
 class SymbenchError(Exception):
-    """A user-facing error: the message names what is wrong and, where it can, the fix."""
+    """A user-facing error: the message names what is wrong and, where it can, the fix. It is
+    one line, even where it quotes a name holding a line break (a key of a JSON file, say)."""
+
+    def __str__(self) -> str:
+        return " ".join(Exception.__str__(self).split())
 
 
 class UnknownNameError(SymbenchError, KeyError):
@@ -20,9 +24,6 @@ class UnknownNameError(SymbenchError, KeyError):
         hint = f"; did you mean {', '.join(close)}?" if close else ""
         known = ", ".join(self.valid) if self.valid else "none registered"
         super().__init__(f"unknown {what} '{name}'{hint} (known: {known})")
-
-    def __str__(self) -> str:  # KeyError would quote the message otherwise
-        return str(self.args[0])
 
 
 def lookup(what: str, name: str, table: dict):

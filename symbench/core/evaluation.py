@@ -7,7 +7,8 @@ raw states and recompute the model's own view, so every representation gets the 
 
 from __future__ import annotations
 
-from collections.abc import Callable
+import json
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -96,15 +97,29 @@ def relative_error(actual: np.ndarray, expected: np.ndarray) -> float:
 
 def run_evaluators(names: list[str], context: EvaluationContext,
                    progress: Callable[[str], None] = lambda name: None) -> dict[str, dict]:
-    """Each evaluator's metrics; one that raises is named in the error."""
+    """Each evaluator's metrics; one that raises, or returns anything but a JSON-ready
+    mapping of metric names, is named in the error."""
     results: dict[str, dict] = {}
     for name in names:
         entry = evaluator(name)
         progress(name)
         try:
-            results[name] = entry.evaluate(context)
+            metrics = entry.evaluate(context)
         except SymbenchError:
             raise
         except Exception as exc:
             raise SymbenchError(f"evaluator '{name}' failed: {type(exc).__name__}: {exc}") from exc
+        results[name] = checked_metrics(name, metrics)
     return results
+
+
+def checked_metrics(name: str, metrics: Any) -> dict[str, Any]:
+    """`metrics` as a dict, or an error naming the evaluator: the record stores it as JSON."""
+    if not isinstance(metrics, Mapping) or not all(isinstance(k, str) for k in metrics):
+        raise SymbenchError(f"evaluator '{name}' returned {type(metrics).__name__}, expected a "
+                            "mapping of metric names (str) to values")
+    try:
+        json.dumps(dict(metrics))
+    except (TypeError, ValueError) as exc:
+        raise SymbenchError(f"evaluator '{name}' returned a value that is not JSON: {exc}") from None
+    return dict(metrics)

@@ -29,9 +29,9 @@ class Normalizer:
 
     @classmethod
     def fit(cls, data: ViewArrays) -> Normalizer:
-        stats = {k: _mean_std(v, _zero_mean_columns(data.view, data.variant, k, v.shape[-1]))
+        stats = {k: _mean_std(v, _zero_mean_columns(data.view, data.variant, k, v.shape[-1]), k)
                  for k, v in data.inputs.items()}
-        stats[TARGET_KEY] = _mean_std(data.target, _TARGET_ZERO_MEAN)
+        stats[TARGET_KEY] = _mean_std(data.target, _TARGET_ZERO_MEAN, TARGET_KEY)
         return cls(stats)
 
     @classmethod
@@ -69,6 +69,11 @@ class Normalizer:
         keys = {k.split("/")[1] for k in arrays if k.startswith("normalization/")}
         if TARGET_KEY not in keys:
             raise SymbenchError("checkpoint holds no target normalization statistics")
+        incomplete = sorted(k for k in keys if f"normalization/{k}/mean" not in arrays
+                            or f"normalization/{k}/std" not in arrays)
+        if incomplete:
+            raise SymbenchError("checkpoint lacks the mean or standard deviation of "
+                                + ", ".join(incomplete))
         return cls({k: (arrays[f"normalization/{k}/mean"], arrays[f"normalization/{k}/std"])
                     for k in sorted(keys)})
 
@@ -82,10 +87,14 @@ def _zero_mean_columns(view: str, variant: str, key: str, n: int) -> np.ndarray:
     return np.zeros(n, dtype=bool)
 
 
-def _mean_std(x: np.ndarray, zero_mean: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _mean_std(x: np.ndarray, zero_mean: np.ndarray, key: str) -> tuple[np.ndarray, np.ndarray]:
     flat = np.asarray(x, dtype=np.float64).reshape(-1, x.shape[-1])
     if not np.isfinite(flat).all():
         raise SymbenchError("training data holds NaN or infinite values; cannot normalize")
-    mean = np.where(zero_mean, 0.0, flat.mean(axis=0))
-    std = np.sqrt(((flat - mean) ** 2).mean(axis=0))
+    with np.errstate(over="ignore"):  # values near 1e300 overflow: refused just below
+        mean = np.where(zero_mean, 0.0, flat.mean(axis=0))
+        std = np.sqrt(((flat - mean) ** 2).mean(axis=0))
+    if not (np.isfinite(mean).all() and np.isfinite(std).all()):
+        raise SymbenchError(f"training data '{key}' is too large to normalize: its mean or "
+                            "standard deviation overflows float64")
     return mean, np.where(std < MIN_STD, 1.0, std)

@@ -34,11 +34,16 @@ def _key(entry: Any) -> str:
 
 
 def registrations(kind: str, host: PluginHost | None = None) -> list[Registration]:
-    """Every entry of one kind, duplicates included; a wrong type is a problem of its plugin."""
+    """Every entry of one kind, duplicates included; a wrong type is a problem of its plugin
+    (reported, and its result left out, so that it breaks no command but its own)."""
     hook, entry_type = lookup("kind", kind, KINDS)
     host = host or get_host()
     found = []
     for plugin, entries in host.call(hook):
+        if not isinstance(entries, (list, tuple)):
+            wrong = f"returned {type(entries).__name__}, expected a list of {entry_type.__name__}"
+            host.report(PluginProblem(plugin, hook, wrong))
+            continue
         for entry in entries:
             if isinstance(entry, entry_type):
                 found.append(Registration(_key(entry), entry, plugin))

@@ -24,6 +24,8 @@ from pydantic import BaseModel, ConfigDict, Field, StringConstraints, Validation
 
 from symbench.core.atomic import write_text_atomic
 from symbench.core.errors import SymbenchError
+from symbench.core.jsonfile import parse_json
+from symbench.core.validation import explain
 
 RECORD_SCHEMA_VERSION = 2
 LEGACY_SCHEMA_VERSION = 1  # unsealed, no provenance: shown by `symbench leaderboard` only
@@ -151,11 +153,7 @@ def seal_of(data: dict[str, Any]) -> str:
 
 
 def _explain(error: ValidationError, source: str) -> SymbenchError:
-    problems = []
-    for e in error.errors():
-        where = ".".join(str(p) for p in e["loc"]) or "(record)"
-        problems.append(f"{where}: {e['msg']}")
-    return SymbenchError(f"invalid result record {source}: " + "; ".join(problems))
+    return explain(error, f"invalid result record {source}")
 
 
 def write_record(record: RecordBody | dict, path: Path) -> ResultRecord:
@@ -175,9 +173,10 @@ def write_record(record: RecordBody | dict, path: Path) -> ResultRecord:
 
 def _load(path: Path) -> dict[str, Any]:
     try:
-        data = json.loads(Path(path).read_text())
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
-        raise SymbenchError(f"cannot read result record {path}: {exc}") from None
+        text = Path(path).read_bytes()
+    except OSError as exc:
+        raise SymbenchError(f"cannot read result record {path}: {exc.strerror or exc}") from None
+    data = parse_json(text, f"cannot read result record {path}")
     if not isinstance(data, dict):
         raise SymbenchError(f"result record {path} is not a JSON object")
     return data

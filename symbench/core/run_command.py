@@ -8,6 +8,7 @@ import click
 from rich.console import Console
 from rich.table import Table
 
+from symbench.core.cli_types import EPOCHS, SEED, WORKERS, CommaList, WritableFolder
 from symbench.core.results import ResultRecord
 from symbench.core.runner import DEFAULT_EVALUATORS, RunSpec, run as run_spec
 
@@ -17,23 +18,24 @@ from symbench.core.runner import DEFAULT_EVALUATORS, RunSpec, run as run_spec
 @click.option("--robot", "robot_name", required=True, help="Registered robot, e.g. hexa.")
 @click.option("--backend", default="torch", show_default=True, help="torch or jax.")
 @click.option("--split", default="iid", show_default=True, help="A registered split.")
-@click.option("--seed", default=0, show_default=True, type=int)
+@click.option("--seed", default=0, show_default=True, type=SEED)
 @click.option("--preset", default="small", show_default=True, help="smoke, small or paper.")
 @click.option("--variant", type=click.Choice(["acc", "next"]), default=None,
               help="Input variant (default: the model's; closed-loop control uses next).")
 @click.option("--evaluators", default=",".join(DEFAULT_EVALUATORS), show_default=True,
-              help="Comma-separated evaluator names (see `symbench list evaluators`).")
-@click.option("--output", type=click.Path(path_type=Path), default=Path("results"),
+              type=CommaList(), help="Comma-separated evaluator names (see `symbench list evaluators`).")
+@click.option("--output", type=WritableFolder(), default=Path("results"),
               show_default=True, help="Folder for the record, checkpoints and plots.")
-@click.option("--workers", default=2, show_default=True, type=int,
-              help="Processes for dataset generation.")
-@click.option("--max-epochs", type=int, default=None, help="Override the preset's epoch cap.")
+@click.option("--workers", default=2, show_default=True, type=WORKERS,
+              help="Worker processes at once, simulating the dataset when it is missing.")
+@click.option("--max-epochs", type=EPOCHS, default=None, help="Override the preset's epoch cap.")
 def run(model_name: str, robot_name: str, backend: str, split: str, seed: int, preset: str,
-        variant: str | None, evaluators: str, output: Path, workers: int, max_epochs: int | None) -> None:
+        variant: str | None, evaluators: list[str], output: Path, workers: int,
+        max_epochs: int | None) -> None:
     """Train and evaluate MODEL on ROBOT (generating the dataset when missing)."""
     console = Console()
     spec = RunSpec(model=model_name, robot=robot_name, backend=backend, split=split, seed=seed,
-                   preset=preset, variant=variant, evaluators=tuple(e.strip() for e in evaluators.split(",") if e.strip()),
+                   preset=preset, variant=variant, evaluators=tuple(evaluators),
                    output=output, workers=workers, max_epochs=max_epochs)
     record = run_spec(spec, on_stage=lambda stage: console.print(f"[bold]{stage}[/]"))
     console.print(metrics_table(record))

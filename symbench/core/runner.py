@@ -17,6 +17,7 @@ from symbench.core import registry
 from symbench.core.entries import ModelEntry
 from symbench.core.errors import SymbenchError, UnknownNameError
 from symbench.core.evaluation import EvaluationContext, TrainedOnSplit, run_evaluators
+from symbench.core.paths import writable_folder
 from symbench.core.provenance import (build_hyperparameters, checkpoint_file_hashes, git_commit,
                                       hardware, library_versions, plugin_info)
 from symbench.core.results import RecordBody, ResultRecord, write_record
@@ -82,7 +83,8 @@ def model_entry(spec: RunSpec):
 
 
 def check_names(spec: RunSpec) -> None:
-    """Every name resolves before any minute is spent (closest names otherwise)."""
+    """Every name resolves and every number is valid before any minute is spent (closest
+    names otherwise)."""
     model_entry(spec)
     registry.robot(spec.robot)
     registry.split(spec.split)
@@ -90,6 +92,18 @@ def check_names(spec: RunSpec) -> None:
         registry.evaluator(name)
     if spec.preset not in MAX_EPOCHS:
         raise UnknownNameError("preset", spec.preset, MAX_EPOCHS)
+    if spec.workers < 1:
+        raise SymbenchError(f"workers must be at least 1, got {spec.workers}")
+    train_config(spec)
+
+
+def train_config(spec: RunSpec) -> TrainConfig:
+    """The run's training configuration (checked: seed, epoch cap, ...)."""
+    from symbench.core.training import TrainConfig
+
+    max_epochs = MAX_EPOCHS[spec.preset] if spec.max_epochs is None else spec.max_epochs
+    return TrainConfig(**{**spec.train_config, "seed": spec.seed, "progress": spec.progress,
+                          "max_epochs": max_epochs})
 
 
 def ensure_dataset(spec: RunSpec):
@@ -113,15 +127,15 @@ def recorded_config(config: TrainConfig, entry: ModelEntry) -> dict[str, Any]:
 def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> ResultRecord:
     """Train and evaluate one model; writes and returns the validated record."""
     from symbench.core.resume import BEST_DIR
-    from symbench.core.training import TrainConfig, train
+    from symbench.core.training import train
 
     check_names(spec)
+    writable_folder(spec.output, "output folder")
     entry = model_entry(spec)
+    config = train_config(spec)
     timer = Timer()
     on_stage("dataset")
     dataset = timer.measure("dataset_s", ensure_dataset, spec)
-    config = TrainConfig(**{**spec.train_config, "seed": spec.seed, "progress": spec.progress,
-                            "max_epochs": spec.max_epochs or MAX_EPOCHS[spec.preset]})
     # per dataset version, so a regenerated dataset trains afresh instead of resuming
     checkpoints = spec.output / "checkpoints" / spec.key() / dataset.content_hash[:12]
 

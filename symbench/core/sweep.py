@@ -3,17 +3,20 @@
 A run is finished when its result record exists, validates and matches its seal (a
 schema-1 record is redone); records are written
 atomically, so a run killed half-way leaves none and is simply redone. Datasets are made
-once per robot before the runs start, so parallel runs never race to generate them.
+once per robot before the runs start, so parallel runs never race to generate them. Local
+workers exit with the sweep, however it ends (`processes`); Ctrl-C reports how many runs
+have records, counted on disk.
 """
 
 from __future__ import annotations
 
 import itertools
-import os
 from collections.abc import Callable, Sequence
 from dataclasses import replace
 
+from symbench.core import ray_executor
 from symbench.core.errors import SymbenchError
+from symbench.core.processes import run_each
 from symbench.core.results import read_record
 from symbench.core.runner import RunSpec, check_names, ensure_dataset, run
 
@@ -46,50 +49,32 @@ def _run_quietly(spec: RunSpec) -> str:
 
 def sweep(specs: list[RunSpec], workers: int = 1, executor: str = "local",
           address: str | None = None, report: Callable[[str], None] = print) -> list[str]:
-    """Run the unfinished specs; returns the keys that ran."""
+    """Run the unfinished specs, at most `workers` at once locally; returns the keys that ran."""
     if executor not in ("local", "ray"):
         raise SymbenchError(f"unknown executor '{executor}' (local, ray)")
+    if workers < 1:
+        raise SymbenchError(f"workers must be at least 1, got {workers}")
     todo = [s for s in specs if not finished(s)]
     report(f"{len(specs) - len(todo)} of {len(specs)} runs already have records; {len(todo)} to run")
+    ray = ray_executor.connect(address) if executor == "ray" and todo else None
     for robot_spec in {(s.robot, s.preset): s for s in todo}.values():
         ensure_dataset(robot_spec)
-    if executor == "ray":
-        return _sweep_ray(todo, address, report)
-    if workers <= 1:
-        done = []
-        for spec in todo:
-            done.append(_run_quietly(spec))
-            report(f"finished {spec.key()}")
-        return done
-    import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor, as_completed
+    done: list[str] = []
 
-    done = []
-    with ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn")) as pool:
-        for future in as_completed([pool.submit(_run_quietly, s) for s in todo]):
-            done.append(future.result())
-            report(f"finished {done[-1]}")
-    return done
+    def finish(key: str) -> None:
+        done.append(key)
+        report(f"finished {key}")
 
-
-def _sweep_ray(todo: list[RunSpec], address: str | None, report: Callable[[str], None]) -> list[str]:
     try:
-        import ray
-    except ImportError:
-        raise SymbenchError("--executor ray needs Ray: pip install -c constraints.txt "
-                            "'symbench[ray]'") from None
-    # workers see the same cache and headless rendering as this process
-    env = {k: os.environ[k] for k in ("SYMBENCH_HOME", "MUJOCO_GL") if k in os.environ}
-    ray.init(address=address, ignore_reinit_error=True, log_to_driver=False,
-             include_dashboard=False, runtime_env={"env_vars": env})
-    remote = ray.remote(num_cpus=1)(_run_quietly)
-    pending = {remote.remote(s): s for s in todo}
-    done = []
-    while pending:
-        ready, _ = ray.wait(list(pending), num_returns=1)
-        for ref in ready:
-            done.append(ray.get(ref))
-            pending.pop(ref)
-            report(f"finished {done[-1]}")
+        if ray is not None:
+            return ray_executor.run_all(ray, _run_quietly, todo, report)
+        if workers == 1:
+            for spec in todo:
+                finish(_run_quietly(spec))
+        else:
+            run_each(_run_quietly, todo, workers, finish)
+    except KeyboardInterrupt:
+        have = sum(finished(s) for s in specs)
+        raise SymbenchError(f"interrupted with {have} of {len(specs)} runs finished; run the "
+                            "same command again to resume") from None
     return done
-

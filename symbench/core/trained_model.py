@@ -13,14 +13,17 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+from pydantic import ValidationError
 
 from symbench import __version__
 from symbench.core.backends import Predictor, get_backend
 from symbench.core.checkpoints import encode, read_tensors, write_json, write_tensors
 from symbench.core.entries import ModelEntry
 from symbench.core.errors import SymbenchError
+from symbench.core.model_description import ModelDescription
 from symbench.core.model_dims import ModelDims
 from symbench.core.normalization import Normalizer
+from symbench.core.validation import explain
 
 FORMAT = "symbench-model/1"
 TENSORS, DESCRIPTION = "model.safetensors", "model.json"
@@ -100,13 +103,21 @@ class TrainedModel:
         arrays, d = read_tensors(Path(folder) / TENSORS)
         if not isinstance(d, dict) or d.get("format") != FORMAT:
             raise SymbenchError(f"{folder}/{TENSORS} is not a symbench model ({FORMAT})")
-        if entry is None:
-            from symbench.core import registry
+        try:
+            ModelDescription.model_validate(d)
+        except ValidationError as exc:
+            raise explain(exc, f"{folder}/{TENSORS}: malformed model description") from None
+        try:
+            if entry is None:
+                from symbench.core import registry
 
-            entry = registry.model(d["model"], d["backend"])
+                entry = registry.model(d["model"], d["backend"])
+            dims, normalizer = ModelDims.from_dict(d["dims"]), Normalizer.from_arrays(arrays)
+        except SymbenchError as exc:
+            raise SymbenchError(f"{folder}/{TENSORS}: {exc}") from None
         if (entry.name, entry.backend) != (d["model"], d["backend"]):
             raise SymbenchError(f"{folder} holds {d['model']}/{d['backend']}, "
                                 f"not {entry.name}/{entry.backend}")
         params = {k.removeprefix("params/"): v for k, v in arrays.items() if k.startswith("params/")}
-        return cls(entry, ModelDims.from_dict(d["dims"]), d["hyper"], Normalizer.from_arrays(arrays),
-                   params, d["history"], d["best_epoch"], d["config"], d["stopped"])
+        return cls(entry, dims, d["hyper"], normalizer, params, d["history"], d["best_epoch"],
+                   d["config"], d["stopped"])

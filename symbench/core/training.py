@@ -26,6 +26,7 @@ from symbench.core.entries import ModelEntry
 from symbench.core.errors import SymbenchError
 from symbench.core.model_dims import ModelDims, dims_of
 from symbench.core.normalization import Normalizer
+from symbench.core.seeds import check_seed
 from symbench.core.trained_model import TrainedModel
 
 
@@ -42,6 +43,7 @@ class TrainConfig:
     progress: bool = True
 
     def __post_init__(self) -> None:
+        check_seed(self.seed, "TrainConfig.seed")
         for name in ("batch_size", "max_epochs", "stop_patience"):
             if getattr(self, name) < 1:
                 raise SymbenchError(f"TrainConfig.{name} must be at least 1, got {getattr(self, name)}")

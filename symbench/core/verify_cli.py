@@ -10,6 +10,7 @@ import click
 from rich.console import Console
 from rich.table import Table
 
+from symbench.core.cli_types import NON_NEGATIVE, WORKERS
 from symbench.core.verify import ATOL, RTOL, Tolerance, Verification, verify_record
 
 
@@ -25,11 +26,11 @@ def _table(result: Verification) -> Table:
 
 @click.command("verify")
 @click.argument("records", nargs=-1, required=True, type=click.Path(path_type=Path, exists=True))
-@click.option("--rtol", default=RTOL, show_default=True, type=float,
+@click.option("--rtol", default=RTOL, show_default=True, type=NON_NEGATIVE,
               help="Relative tolerance (deterministic CPU training reproduces bit for bit).")
-@click.option("--atol", default=ATOL, show_default=True, type=float, help="Absolute tolerance.")
-@click.option("--workers", default=2, show_default=True, type=int,
-              help="Processes for regenerating a missing dataset.")
+@click.option("--atol", default=ATOL, show_default=True, type=NON_NEGATIVE, help="Absolute tolerance.")
+@click.option("--workers", default=2, show_default=True, type=WORKERS,
+              help="Worker processes at once, simulating a missing dataset.")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON instead of tables.")
 def verify(records: tuple[Path, ...], rtol: float, atol: float, workers: int, as_json: bool) -> None:
     """Re-run each RECORD (its dataset, seed, hyper-parameters and evaluators) and compare

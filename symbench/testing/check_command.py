@@ -9,6 +9,7 @@ from rich.console import Console
 from rich.table import Table
 
 from symbench.core import registry
+from symbench.core.cli_types import SEED
 from symbench.core.entries import BACKENDS
 from symbench.testing.equivariance import EquivarianceReport, check_model
 from symbench.testing.groups import robot_group
@@ -19,8 +20,9 @@ from symbench.testing.groups import robot_group
 @click.option("--robot", "robot_name", required=True, help="Registered robot, e.g. hexa.")
 @click.option("--backend", type=click.Choice([*BACKENDS, "all"]), default="all", show_default=True,
               help="Backend to check; 'all' checks every backend the model has.")
-@click.option("--samples", default=32, show_default=True, help="Random inputs per group element.")
-@click.option("--seed", default=0, show_default=True, help="Seed of parameters and inputs.")
+@click.option("--samples", default=32, show_default=True, type=click.IntRange(min=1),
+              help="Random inputs per group element.")
+@click.option("--seed", default=0, show_default=True, type=SEED, help="Seed of parameters and inputs.")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON instead of tables.")
 @click.pass_context
 def check_equivariance(ctx: click.Context, model_name: str, robot_name: str, backend: str,

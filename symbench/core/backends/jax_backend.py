@@ -71,6 +71,17 @@ def checked_tree(entry, dims, net, params: Params, dtype: Any = jnp.float32) -> 
     return unflatten(params, dtype)
 
 
+def check_output_shape(entry: ModelEntry, dims: ModelDims, net: nn.Module, params: Params) -> None:
+    """The network's output shape for a batch of 2, from its trace alone (nothing is computed):
+    the loss would broadcast (N, legs, 1) against (N, legs, 3) silently."""
+    batch = {k: jax.ShapeDtypeStruct((2, *shape), jnp.float32) for k, shape in dims.inputs}
+    try:
+        out = jax.eval_shape(lambda p, b: net.apply({"params": p}, **b), unflatten(params), batch)
+    except Exception as exc:  # noqa: BLE001 - a network that cannot run is named, not traced back
+        raise build_error(entry, exc) from exc
+    check_output(entry, dims, getattr(out, "shape", ()), 2)
+
+
 def _x64(dtype: Any) -> contextlib.AbstractContextManager:
     return jax.enable_x64(True) if np.dtype(dtype) == np.float64 else contextlib.nullcontext()
 
@@ -185,6 +196,7 @@ class JaxBackend:
 
     def make_trainer(self, entry, dims, hyper, params, learning_rate, compiled=True):
         net = build_module(entry, dims, hyper)
+        check_output_shape(entry, dims, net, params)
         return JaxTrainer(net, lambda p: checked_tree(entry, dims, net, p), params, learning_rate,
                           compiled)
 

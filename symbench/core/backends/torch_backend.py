@@ -95,9 +95,9 @@ def traced(module: torch.nn.Module, dims: ModelDims, dtype: torch.dtype) -> torc
 
 
 class TorchTrainer:
-    def __init__(self, entry: ModelEntry, net: torch.nn.Module, learning_rate: float,
-                 compiled: bool):
-        self.entry, self.net = entry, net
+    def __init__(self, entry: ModelEntry, dims: ModelDims, net: torch.nn.Module,
+                 learning_rate: float, compiled: bool):
+        self.entry, self.dims, self.net = entry, dims, net
         # fused: one kernel per step instead of a loop over parameters (sdnn: +5-10% samples/s)
         self.opt = torch.optim.Adam(net.parameters(), lr=learning_rate, fused=True)
         self.forward = torch.compile(net) if compiled else net
@@ -114,7 +114,10 @@ class TorchTrainer:
         total = torch.zeros(())
         for idx in torch.from_numpy(order):
             batch = {k: v[idx] for k, v in self.train_inputs.items()}
-            loss = F.mse_loss(self.forward(**batch), self.train_target[idx])
+            out = self.forward(**batch)
+            # before the loss, which would broadcast (N, legs, 1) against (N, legs, 3) silently
+            check_output(self.entry, self.dims, out.shape, len(idx))
+            loss = F.mse_loss(out, self.train_target[idx])
             self.opt.zero_grad(set_to_none=True)
             loss.backward()
             self.opt.step()
@@ -179,7 +182,7 @@ class TorchBackend:
         return predict
 
     def make_trainer(self, entry, dims, hyper, params, learning_rate, compiled=False):
-        return TorchTrainer(entry, build_network(entry, dims, hyper, params), learning_rate,
+        return TorchTrainer(entry, dims, build_network(entry, dims, hyper, params), learning_rate,
                             compiled)
 
 

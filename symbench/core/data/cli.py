@@ -9,6 +9,7 @@ import click
 from rich.console import Console
 from rich.table import Table
 
+from symbench.core.cli_types import SEED, WORKERS, WritableFolder
 from symbench.core.data.presets import PRESETS
 
 console = Console()
@@ -30,8 +31,8 @@ def _print_failures(failures: list[dict], shown: int = 10) -> None:
 @click.option("--robot", required=True, help="Registered robot, e.g. hexa.")
 @click.option("--preset", "preset_name", default="small", show_default=True,
               type=click.Choice(list(PRESETS)), help="Scenario grid size.")
-@click.option("--workers", default=2, show_default=True, type=click.IntRange(1),
-              help="Parallel simulation processes.")
+@click.option("--workers", default=2, show_default=True, type=WORKERS,
+              help="Worker processes at once, each simulating one trajectory.")
 @click.option("--progress/--no-progress", default=True, show_default=True)
 def generate_command(robot: str, preset_name: str, workers: int, progress: bool) -> None:
     """Simulate a preset's scenario grid; resumes an interrupted run."""
@@ -65,7 +66,7 @@ def _print_reference(dataset_id: str, content_hash: str) -> None:
 
 @data.command("info")
 @click.argument("dataset_id")
-@click.option("--seed", default=0, show_default=True, help="Seed of the splits.")
+@click.option("--seed", default=0, show_default=True, type=SEED, help="Seed of the splits.")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
 def info_command(dataset_id: str, seed: int, as_json: bool) -> None:
     """Trajectories, samples, failures and per-split counts of a cached dataset."""
@@ -108,7 +109,7 @@ def import_command(folder: Path, dataset_id: str | None, force: bool) -> None:
 
 @data.command("export")
 @click.argument("dataset_id")
-@click.argument("folder", type=click.Path(file_okay=False, path_type=Path))
+@click.argument("folder", type=WritableFolder())
 @click.option("--format", "fmt", default="parquet", show_default=True,
               type=click.Choice(["parquet", "npz"]))
 def export_command(dataset_id: str, folder: Path, fmt: str) -> None:

@@ -62,8 +62,11 @@ class Dataset:
     def spec(self):
         from symbench.core.robots import load_robot
 
-        spec = load_robot(self.robot)
-        if spec.spec_hash() != self.metadata["robot_spec_hash"]:
+        try:
+            spec = load_robot(self.robot)
+        except SymbenchError as exc:
+            raise SymbenchError(f"dataset '{self.id}': {exc}") from None
+        if spec.spec_hash() != self.metadata["robot_spec_hash"] or spec.n_legs != self.n_legs:
             raise SymbenchError(f"dataset '{self.id}' was made with another version of robot "
                                 f"'{self.robot}' (its robot.toml changed since); rebuild it with: "
                                 f"{self.metadata['repair_command']}")

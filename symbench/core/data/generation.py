@@ -11,10 +11,8 @@ Simulation is deterministic, so the files and the content hash are too.
 
 from __future__ import annotations
 
-import multiprocessing
 import time
 from collections.abc import Callable, Sequence
-from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
 from pathlib import Path
@@ -26,8 +24,10 @@ from symbench.core.data.determinism import (numerics_problems, pinned_worker_env
                                             require_pinned_numerics)
 from symbench.core.data.metadata import METADATA, dataset_dir, library_versions, write_metadata
 from symbench.core.data.presets import RECORD_PERIOD, dataset_id, preset
-from symbench.core.data.storage import atomic_write_json, read_json, sha256_file, write_trajectory
+from symbench.core.data.storage import atomic_write_json, sha256_file, write_trajectory
 from symbench.core.errors import SymbenchError
+from symbench.core.jsonfile import read_json
+from symbench.core.processes import run_each
 from symbench.core.raw import SCHEMA_VERSION, validate_raw
 from symbench.core.robots import load_robot
 from symbench.core.scenario import Scenario
@@ -116,12 +116,18 @@ def finished_record(task: Task) -> dict[str, Any] | None:
         record = read_json(path, "generation record")
     except SymbenchError:
         return None
-    if record.get("scenario") != task.scenario or record.get("key") != task.key:
+    if (not isinstance(record, dict) or record.get("id") != task.index
+            or record.get("scenario") != task.scenario or record.get("key") != task.key):
         return None
     if record.get("status") == "ok":
-        file = task.root / record["file"]
-        if not file.is_file() or sha256_file(file) != record["sha256"]:
+        file_named = record.get("file") == trajectory_file(task.index)
+        if not file_named or not isinstance(record.get("n_steps"), int):
             return None
+        file = task.root / record["file"]
+        if not file.is_file() or sha256_file(file) != record.get("sha256"):
+            return None
+    elif record.get("status") != "failed" or not isinstance(record.get("failure"), str):
+        return None
     return record
 
 
@@ -131,16 +137,7 @@ def _run_all(tasks: Sequence[Task], workers: int, on_done: Callable[[dict], None
         for task in tasks:
             on_done(run_task(task))
         return
-    pool = ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn"))
-    try:
-        with pinned_worker_environment():  # the workers start at the first submit
-            pending: set[Future] = {pool.submit(run_task, t) for t in tasks}
-        while pending:
-            done, pending = wait(pending, return_when=FIRST_COMPLETED)
-            for future in done:
-                on_done(future.result())
-    finally:
-        pool.shutdown(wait=True, cancel_futures=True)
+    run_each(run_task, tasks, workers, on_done, environment=pinned_worker_environment)
 
 
 def generate(robot: str, preset_name: str = "small", workers: int = 1,
@@ -182,7 +179,9 @@ def generate(robot: str, preset_name: str = "small", workers: int = 1,
         try:
             _run_all(todo, workers, on_done, in_process)
         except KeyboardInterrupt:
-            raise SymbenchError(f"interrupted with {len(records)} of {len(tasks)} trajectories "
+            # counted on disk: work the pool finished while shutting down is not in `records`
+            done = sum(finished_record(task) is not None for task in tasks)
+            raise SymbenchError(f"interrupted with {done} of {len(tasks)} trajectories "
                                 "done; run the same command again to resume") from None
         except BrokenProcessPool as exc:
             raise SymbenchError(f"a worker process died ({exc}) with {len(records)} of "

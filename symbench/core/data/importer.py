@@ -9,32 +9,36 @@ Parquet files carry one scalar column per component (`t`, `base_quat.w`, `q.leg0
 `contact.leg0`, ... see symbench.core.data.columns); npz files carry one array per raw
 column shaped (T, ...) as in symbench/core/raw.py. `trajectories` may be left out: then
 every *.parquet and *.npz file of the folder is imported, in name order. Every file is
-checked (columns, lengths, leg count, NaN, flags, sampling period) before anything is
-written, and the imported dataset is stored exactly like a generated one.
+checked (columns, lengths, leg count, NaN, values beyond float32, flags, sampling period)
+before anything is written, and the imported dataset is stored exactly like a generated one:
+built in a hidden staging folder and renamed into place once complete, so a failed import
+(even with --force) leaves the cache as it was.
 """
 
 from __future__ import annotations
 
 import io
+import shutil
+import zipfile
+import zlib
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 
-from symbench.core.atomic import write_bytes_atomic
+from symbench.core.atomic import replace_folder, staging_folder, write_bytes_atomic
 from symbench.core.data.columns import check_flags, legs_in, unflatten
 from symbench.core.data.dataset import Dataset, load_dataset
-from symbench.core.data.metadata import dataset_dir, library_versions, write_metadata
-from symbench.core.data.storage import (atomic_write_json, read_columns,
-                                        read_json, read_trajectory, write_trajectory)
+from symbench.core.data.import_manifest import IMPORT_JSON, read_manifest
+from symbench.core.data.metadata import METADATA, dataset_dir, library_versions, write_metadata
+from symbench.core.data.scenario_fields import SCENARIO_KEYS
+from symbench.core.data.storage import (atomic_write_json, read_columns, read_trajectory,
+                                        write_trajectory)
 from symbench.core.errors import SymbenchError
+from symbench.core.jsonfile import one_line
 from symbench.core.raw import COLUMN_NAMES, SCHEMA_VERSION, validate_raw
-from symbench.core.scenario import Scenario
 
-IMPORT_JSON = "import.json"
-SUFFIXES = (".parquet", ".npz")
-SCENARIO_KEYS = tuple(f for f in Scenario.__dataclass_fields__ if f != "robot")
 PERIOD_TOLERANCE = 0.05  # relative deviation of any time step from record_period_s
+LARGEST = float(np.finfo(np.float32).max)  # models compute in float32
 
 
 def _read_file(path: Path, n_legs: int, robot: str) -> dict[str, np.ndarray]:
@@ -48,8 +52,9 @@ def _read_file(path: Path, n_legs: int, robot: str) -> dict[str, np.ndarray]:
     try:
         with np.load(path, allow_pickle=False) as npz:
             arrays = {k: npz[k] for k in npz.files}
-    except (OSError, ValueError) as exc:
-        raise SymbenchError(f"{path}: not a readable npz file without pickles ({exc})") from None
+    except (OSError, ValueError, EOFError, zipfile.BadZipFile, zlib.error) as exc:
+        raise SymbenchError(f"{path}: not a readable npz file without pickles "
+                            f"({one_line(exc) or type(exc).__name__})") from None
     missing = [c for c in COLUMN_NAMES if c not in arrays]
     if missing:
         raise SymbenchError(f"{path}: missing column(s) {', '.join(missing)}")
@@ -84,6 +89,13 @@ def check_trajectory(arrays: dict[str, np.ndarray], n_legs: int, period: float, 
     n = validate_raw(arrays, n_legs, source)
     if n < 2:
         raise SymbenchError(f"{source}: {n} step(s); a trajectory needs at least 2")
+    for name, values in arrays.items():
+        per_step = values.reshape(n, -1)
+        huge = np.abs(per_step) > LARGEST
+        if huge.any():
+            step, column = np.argwhere(huge)[0]
+            raise SymbenchError(f"{source}: column '{name}' holds {per_step[step, column]:g} at step "
+                                f"{step}, beyond float32 (±{LARGEST:.3g}), in which models compute")
     check_flags(arrays, source)
     dt = np.diff(np.asarray(arrays["t"], np.float64))
     if np.abs(dt - period).max() > PERIOD_TOLERANCE * period:
@@ -92,70 +104,44 @@ def check_trajectory(arrays: dict[str, np.ndarray], n_legs: int, period: float, 
     return n
 
 
-def _manifest(folder: Path) -> tuple[dict[str, Any], list[dict[str, Any]]]:
-    if not (folder / IMPORT_JSON).is_file():
-        raise SymbenchError(f"{folder} has no {IMPORT_JSON} naming the robot and the record "
-                            "period (see 'Importing a real robot's logs' in the README)")
-    spec = read_json(folder / IMPORT_JSON, "import")
-    if not isinstance(spec, dict):
-        raise SymbenchError(f"{folder / IMPORT_JSON}: expected a JSON object")
-    for key in ("robot", "record_period_s"):
-        if key not in spec:
-            raise SymbenchError(f"{folder / IMPORT_JSON}: missing '{key}'")
-    period = spec["record_period_s"]
-    if not isinstance(period, (int, float)) or not period > 0:
-        raise SymbenchError(f"{folder / IMPORT_JSON}: record_period_s must be a positive number")
-    entries = spec.get("trajectories")
-    if entries is None:
-        entries = [{"file": p.name} for p in sorted(folder.iterdir()) if p.suffix in SUFFIXES]
-    if not entries:
-        raise SymbenchError(f"{folder}: no *.parquet or *.npz trajectory files")
-    for entry in entries:
-        if not isinstance(entry, dict) or "file" not in entry:
-            raise SymbenchError(f"{folder / IMPORT_JSON}: each trajectory needs a 'file'")
-        unknown = sorted(set(entry.get("scenario", {})) - set(SCENARIO_KEYS))
-        if unknown:
-            raise SymbenchError(f"{folder / IMPORT_JSON}: {entry['file']}: unknown scenario "
-                                f"field(s) {', '.join(unknown)} (known: {', '.join(SCENARIO_KEYS)})")
-        if Path(entry["file"]).suffix not in SUFFIXES:
-            raise SymbenchError(f"{folder / IMPORT_JSON}: {entry['file']} is neither .parquet nor .npz")
-    return spec, entries
-
-
 def import_logs(folder: Path, dataset_id: str, force: bool = False) -> Dataset:
-    """Check every file of `folder`, then store them as dataset `dataset_id`."""
+    """Check every file of `folder`, then store them as dataset `dataset_id` (a folder without
+    metadata.json there is an unfinished import or generation, and is replaced)."""
     from symbench.core.robots import load_robot
 
     folder = Path(folder).resolve()
-    spec_json, entries = _manifest(folder)
-    robot = load_robot(str(spec_json["robot"]))
-    period = float(spec_json["record_period_s"])
+    manifest, entries = read_manifest(folder)
+    robot = load_robot(manifest.robot)
     root = dataset_dir(dataset_id)
-    if root.exists() and not force:
+    if (root / METADATA).is_file() and not force:
         raise SymbenchError(f"dataset '{dataset_id}' already exists ({root}); pass --force to replace it")
     loaded = []
     for entry in entries:
-        path = folder / entry["file"]
+        path = folder / entry.file
         if not path.is_file():
             raise SymbenchError(f"{path}: listed in {IMPORT_JSON} but does not exist")
         arrays = _read_file(path, robot.n_legs, robot.name)
-        n = check_trajectory(arrays, robot.n_legs, period, str(path))
-        scenario = {k: None for k in SCENARIO_KEYS} | entry.get("scenario", {})
-        loaded.append((arrays, n, {"robot": robot.name, **scenario}, entry["file"]))
-    records = []
-    for i, (arrays, n, scenario, source) in enumerate(loaded):
-        file = f"trajectories/{i:05d}.parquet"
-        sha = write_trajectory(root / file, arrays, robot.n_legs)
-        records.append({"id": i, "file": file, "sha256": sha, "n_steps": n,
-                        "scenario": scenario, "source_file": source})
-    write_metadata(root, {
-        "id": dataset_id, "source": "imported", "imported_from": str(folder),
-        "robot": robot.name, "n_legs": robot.n_legs, "robot_spec_hash": robot.spec_hash(),
-        "raw_schema_version": SCHEMA_VERSION, "record_period_s": period,
-        "versions": library_versions(), "trajectories": records, "failures": [],
-        "n_samples": sum(n - 1 for _, n, _, _ in loaded),
-        "repair_command": f"symbench data import {folder} --id {dataset_id} --force",
-    })
+        n = check_trajectory(arrays, robot.n_legs, manifest.record_period_s, str(path))
+        loaded.append((arrays, n, {"robot": robot.name, **entry.scenario.model_dump()}, entry.file))
+    staging = staging_folder(root)
+    try:
+        records = []
+        for i, (arrays, n, scenario, source) in enumerate(loaded):
+            file = f"trajectories/{i:05d}.parquet"
+            sha = write_trajectory(staging / file, arrays, robot.n_legs)
+            records.append({"id": i, "file": file, "sha256": sha, "n_steps": n,
+                            "scenario": scenario, "source_file": source})
+        write_metadata(staging, {
+            "id": dataset_id, "source": "imported", "imported_from": str(folder),
+            "robot": robot.name, "n_legs": robot.n_legs, "robot_spec_hash": robot.spec_hash(),
+            "raw_schema_version": SCHEMA_VERSION, "record_period_s": manifest.record_period_s,
+            "versions": library_versions(), "trajectories": records, "failures": [],
+            "n_samples": sum(n - 1 for _, n, _, _ in loaded),
+            "repair_command": f"symbench data import {folder} --id {dataset_id} --force",
+        })
+        replace_folder(staging, root)
+    finally:
+        shutil.rmtree(staging, ignore_errors=True)  # gone already when the import succeeded
     return load_dataset(dataset_id)
 
 

@@ -11,10 +11,16 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from symbench.core.data.storage import atomic_write_json, canonical_json, read_json, sha256_bytes, sha256_file
+from pydantic import ValidationError
+
+from symbench.core.data.metadata_schema import DatasetMetadata
+from symbench.core.data.storage import (atomic_write_json, canonical_json, sha256_bytes,
+                                        sha256_file, step_count)
 from symbench.core.errors import SymbenchError
-from symbench.core.provenance import package_versions
+from symbench.core.jsonfile import read_json
 from symbench.core.paths import datasets_dir
+from symbench.core.provenance import package_versions
+from symbench.core.validation import explain
 
 FORMAT = "symbench-dataset"
 FORMAT_VERSION = 1
@@ -59,6 +65,10 @@ def read_metadata(dataset_id: str, missing_hint: str) -> tuple[Path, dict[str, A
     if meta.get("content_hash") != content_hash(meta):
         raise SymbenchError(f"dataset '{dataset_id}': metadata.json was edited or damaged "
                             f"(content hash mismatch); rebuild it with: {meta.get('repair_command')}")
+    try:
+        DatasetMetadata.model_validate(meta)
+    except ValidationError as exc:
+        raise explain(exc, f"dataset '{dataset_id}': {root / METADATA} is malformed") from None
     return root, meta
 
 
@@ -73,8 +83,16 @@ def damaged_files(root: Path, meta: dict[str, Any]) -> list[str]:
 
 
 def verify(root: Path, meta: dict[str, Any]) -> None:
+    """Every file as the metadata describes it: its SHA-256, then its number of steps (which
+    a re-hashed metadata.json could misstate while naming the right file)."""
     bad = damaged_files(root, meta)
     if bad:
         shown = ", ".join(bad[:3]) + (f" and {len(bad) - 3} more" if len(bad) > 3 else "")
         raise SymbenchError(f"dataset '{meta['id']}': {shown} changed, truncated or missing "
                             f"(SHA-256 mismatch); fix it with: {meta['repair_command']}")
+    for rec in meta["trajectories"]:
+        steps = step_count(root / rec["file"])
+        if steps != rec["n_steps"]:
+            raise SymbenchError(f"dataset '{meta['id']}': {rec['file']} holds {steps} steps, "
+                                f"metadata.json says {rec['n_steps']}; fix it with: "
+                                f"{meta['repair_command']}")

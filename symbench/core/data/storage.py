@@ -29,15 +29,6 @@ def atomic_write_json(path: Path, obj: Any) -> None:
     write_bytes_atomic(path, canonical_json(obj).encode())
 
 
-def read_json(path: Path, what: str) -> Any:
-    try:
-        return json.loads(path.read_text())
-    except FileNotFoundError:
-        raise SymbenchError(f"{what}: {path} does not exist") from None
-    except (json.JSONDecodeError, UnicodeDecodeError) as exc:
-        raise SymbenchError(f"{what}: {path} is not valid JSON ({exc})") from None
-
-
 def sha256_bytes(data: bytes) -> str:
     return hashlib.sha256(data).hexdigest()
 
@@ -81,6 +72,17 @@ def read_columns(path: Path) -> dict[str, np.ndarray]:
     except (OSError, pa.ArrowException) as exc:
         raise SymbenchError(f"{path}: not a readable Parquet file ({exc})") from None
     return {name: table.column(name).to_numpy() for name in table.column_names}
+
+
+def step_count(path: Path) -> int:
+    """The number of rows of a Parquet file, from its footer (the data is not read)."""
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    try:
+        return pq.read_metadata(path).num_rows
+    except (OSError, pa.ArrowException) as exc:
+        raise SymbenchError(f"{path}: not a readable Parquet file ({exc})") from None
 
 
 def read_trajectory(path: Path, n_legs: int) -> dict[str, np.ndarray]:

@@ -15,6 +15,8 @@ import time
 
 import click
 
+from symbench.core.cli_types import INCLINATION, POSITIVE
+
 RAW_STEPS = 5000
 
 
@@ -68,10 +70,10 @@ def measure(robot: str, inclination: float = 90.0, seconds: float = 2.0,
 
 @click.command("sim")
 @click.option("--robot", required=True, help="Registered robot, e.g. hexa.")
-@click.option("--inclination", type=float, default=90.0, show_default=True)
-@click.option("--seconds", type=float, default=2.0, show_default=True,
+@click.option("--inclination", type=INCLINATION, default=90.0, show_default=True)
+@click.option("--seconds", type=POSITIVE, default=2.0, show_default=True,
               help="Simulated seconds of the controlled run.")
-@click.option("--control-period", type=float, default=None,
+@click.option("--control-period", type=POSITIVE, default=None,
               help="Seconds between whole-body QP solves [default: every physics step, 1 ms].")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
 def bench_sim(robot: str, inclination: float, seconds: float, control_period: float | None,

@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
+from symbench.core.errors import SymbenchError
 from symbench.core.scenario import Scenario
 from symbench.core.sim.rollout import run_climb
 from symbench.core.sim.setup import Climb
@@ -29,6 +31,8 @@ class CheckReport:
 
 def check(scenario: Scenario, control_period: float | None = None) -> CheckReport:
     """Run `scenario` with the whole-body controller."""
+    if control_period is not None and not (math.isfinite(control_period) and control_period > 0):
+        raise SymbenchError(f"control period must be a positive number of seconds, got {control_period}")
     rollout = run_climb(Climb.from_scenario(scenario), scenario.seconds,
                         control_period=control_period)
     return CheckReport(scenario.to_dict(), rollout.attached, rollout.failure, rollout.metrics)

@@ -7,6 +7,7 @@ import sys
 
 import click
 
+from symbench.core.cli_types import INCLINATION, POSITIVE, SEED, FiniteFloat
 from symbench.core.scenario import DIRECTIONS
 
 
@@ -17,17 +18,17 @@ def sim() -> None:
 
 @sim.command("check")
 @click.option("--robot", required=True, help="Registered robot, e.g. hexa.")
-@click.option("--inclination", type=float, default=90.0, show_default=True,
+@click.option("--inclination", type=INCLINATION, default=90.0, show_default=True,
               help="Surface inclination in degrees: 0 floor, 90 wall, 180 ceiling.")
-@click.option("--heading", type=float, default=0.0, show_default=True,
+@click.option("--heading", type=FiniteFloat(), default=0.0, show_default=True,
               help="Slope heading: rotation of the scene about gravity, degrees.")
-@click.option("--yaw", type=float, default=0.0, show_default=True,
+@click.option("--yaw", type=FiniteFloat(), default=0.0, show_default=True,
               help="Initial base yaw relative to the slope, degrees.")
 @click.option("--direction", type=click.Choice(list(DIRECTIONS)), default="forward",
               show_default=True, help="Step direction in the body frame.")
-@click.option("--seconds", type=float, default=10.0, show_default=True)
-@click.option("--seed", type=int, default=0, show_default=True)
-@click.option("--control-period", type=float, default=None,
+@click.option("--seconds", type=POSITIVE, default=10.0, show_default=True)
+@click.option("--seed", type=SEED, default=0, show_default=True)
+@click.option("--control-period", type=POSITIVE, default=None,
               help="Seconds between whole-body QP solves [default: every physics step, 1 ms].")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
 def check_command(robot: str, inclination: float, heading: float, yaw: float, direction: str,
@@ -65,8 +66,8 @@ def _print_report(report) -> None:
 
 @sim.command("mjcf")
 @click.option("--robot", required=True, help="Registered robot, e.g. hexa.")
-@click.option("--inclination", type=float, default=0.0, show_default=True)
-@click.option("--heading", type=float, default=0.0, show_default=True)
+@click.option("--inclination", type=INCLINATION, default=0.0, show_default=True)
+@click.option("--heading", type=FiniteFloat(), default=0.0, show_default=True)
 def mjcf_command(robot: str, inclination: float, heading: float) -> None:
     """Print the generated MJCF of ROBOT on its arena (for inspection; never stored)."""
     from symbench.core.robots import load_robot

@@ -9,6 +9,7 @@ from __future__ import annotations
 import json
 import zlib
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 
@@ -59,3 +60,13 @@ def fake_simulate(scenario: Scenario, record_period: float = RECORD_PERIOD) -> F
     if scenario.seed == 13:
         return FakeRollout(arrays, False, "foot 2 left the surface at 0.3 s")
     return FakeRollout(arrays, True, None)
+
+
+def write_logs(folder, robot: str = "hexa", n_files: int = 6, n_steps: int = 20) -> Path:
+    """A folder that `symbench data import` takes: npz logs of `robot` and an import.json."""
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    for i in range(n_files):
+        np.savez(folder / f"run{i}.npz", **synthetic_raw(N_LEGS[robot], n_steps, seed=i))
+    (folder / "import.json").write_text(json.dumps({"robot": robot, "record_period_s": RECORD_PERIOD}))
+    return folder
