@@ -93,8 +93,9 @@ def numerics_problems() -> list[str]:
                             f"not {OPENBLAS_CORE}")
         if lib.get("num_threads") != 1:
             problems.append(f"OpenBLAS {lib['filepath']} uses {lib.get('num_threads')} threads")
+    pins = pinned_environment()
     for name in ("GLIBC_TUNABLES", "ARROW_USER_SIMD_LEVEL", "OPENBLAS_L2_SIZE"):
-        if os.environ.get(name) != pinned_environment()[name]:
+        if os.environ.get(name) != pins[name]:
             problems.append(f"{name} is {os.environ.get(name)!r} (set before the process started)")
     if not portable_qp_in_process():
         problems.append("proxsuite's SIMD build is loaded")
