@@ -1,16 +1,157 @@
-"""symbench: a benchmark for learned dynamics of symmetric legged robots."""
+"""symbench: a benchmark for learned dynamics of symmetric legged robots.
 
-from importlib.metadata import PackageNotFoundError, version
+This module is the public API for plugin authors: everything a model, robot, evaluator or
+split plugin needs is importable from here (`from symbench import hookimpl, ModelEntry`),
+and nothing under `symbench.core` is promised to stay where it is. Names load on first use,
+so `import symbench` stays light (no torch, JAX or MuJoCo until a name that needs them).
 
-try:
-    __version__ = version("symbench")
-except PackageNotFoundError:  # running from a source tree that was never installed
-    __version__ = "0.0.0+unknown"
+Registering plugins
+    hookimpl, ModelEntry, RobotEntry, EvaluatorEntry, SplitEntry, Lazy, BACKENDS, VIEWS,
+    VARIANTS, SymbenchError, InvalidEntryError
+Building models
+    ModelDims, ViewArrays, LegGroup, act, schema
+Writing evaluators
+    EvaluationContext, TrainedOnSplit, rmse, relative_error, act_on_raw,
+    rotate_scene_about_gravity, Scenario, simulate, track, build_view, sample_efficiency_png
+Writing splits
+    SplitContext, carve_validation
+Using symbench from Python (a plugin's own tests)
+    model_entry, load_robot, TrainConfig, train
+The equivariance kit is `symbench.testing` (also a pytest plugin).
+"""
 
-from symbench.core.training_kernels import pin_training_kernels  # noqa: E402
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+from symbench.core.common.version import __version__
+from symbench.core.training.kernels import pin_training_kernels
 
 pin_training_kernels()  # before torch, MKL or XLA load: same training numbers on every CPU
 
-from symbench.core.hookspecs import hookimpl  # noqa: E402  (the marker plugin authors use)
+from symbench.core.plugin.hookspecs import hookimpl  # noqa: E402  (the marker plugin authors use)
 
-__all__ = ["__version__", "hookimpl"]
+# public name -> "module:attribute" ("module" alone for a module), imported on first use
+_PUBLIC: dict[str, str] = {
+    "ModelEntry": "symbench.core.plugin.entries:ModelEntry",
+    "RobotEntry": "symbench.core.plugin.entries:RobotEntry",
+    "EvaluatorEntry": "symbench.core.plugin.entries:EvaluatorEntry",
+    "SplitEntry": "symbench.core.plugin.entries:SplitEntry",
+    "BACKENDS": "symbench.core.plugin.entries:BACKENDS",
+    "VIEWS": "symbench.core.plugin.entries:VIEWS",
+    "VARIANTS": "symbench.core.plugin.entries:VARIANTS",
+    "InvalidEntryError": "symbench.core.plugin.entries:InvalidEntryError",
+    "Lazy": "symbench.core.common.lazy:Lazy",
+    "SymbenchError": "symbench.core.common.errors:SymbenchError",
+    "ModelDims": "symbench.core.data.model_dims:ModelDims",
+    "ViewArrays": "symbench.core.common.arrays:ViewArrays",
+    "LegGroup": "symbench.core.symmetry.groups:LegGroup",
+    "act": "symbench.core.symmetry.groups:act",
+    "schema": "symbench.core.data.schema",
+    "EvaluationContext": "symbench.core.runs.evaluation:EvaluationContext",
+    "TrainedOnSplit": "symbench.core.runs.evaluation:TrainedOnSplit",
+    "rmse": "symbench.core.runs.evaluation:rmse",
+    "relative_error": "symbench.core.runs.evaluation:relative_error",
+    "act_on_raw": "symbench.core.data.raw_action:act_on_raw",
+    "rotate_scene_about_gravity": "symbench.core.data.raw_action:rotate_scene_about_gravity",
+    "Scenario": "symbench.core.sim.scenario:Scenario",
+    "simulate": "symbench.core.sim.rollout:simulate",
+    "track": "symbench.core.sim.learned_control:track",
+    "build_view": "symbench.core.data.views:build_view",
+    "sample_efficiency_png": "symbench.core.board.plots:sample_efficiency_png",
+    "SplitContext": "symbench.core.data.splits:SplitContext",
+    "carve_validation": "symbench.core.data.splits:carve_validation",
+    "model_entry": "symbench.core.plugin.registry:model",
+    "load_robot": "symbench.core.robot.specs:load_robot",
+    "TrainConfig": "symbench.core.training.loop:TrainConfig",
+    "train": "symbench.core.training.loop:train",
+}
+
+__all__ = [
+    "BACKENDS",
+    "VARIANTS",
+    "VIEWS",
+    "EvaluationContext",
+    "EvaluatorEntry",
+    "InvalidEntryError",
+    "Lazy",
+    "LegGroup",
+    "ModelDims",
+    "ModelEntry",
+    "RobotEntry",
+    "Scenario",
+    "SplitContext",
+    "SplitEntry",
+    "SymbenchError",
+    "TrainConfig",
+    "TrainedOnSplit",
+    "ViewArrays",
+    "__version__",
+    "act",
+    "act_on_raw",
+    "build_view",
+    "carve_validation",
+    "hookimpl",
+    "load_robot",
+    "model_entry",
+    "relative_error",
+    "rmse",
+    "rotate_scene_about_gravity",
+    "sample_efficiency_png",
+    "schema",
+    "simulate",
+    "track",
+    "train",
+]
+assert set(__all__) == {"__version__", "hookimpl", *_PUBLIC}
+
+
+def __getattr__(name: str) -> Any:
+    """Load a public name on first use (PEP 562) and keep it."""
+    if name not in _PUBLIC:
+        raise AttributeError(f"module 'symbench' has no attribute '{name}'")
+    module, _, attribute = _PUBLIC[name].partition(":")
+    value = importlib.import_module(module)
+    if attribute:
+        value = getattr(value, attribute)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))
+
+
+if TYPE_CHECKING:  # what type checkers and editors see
+    from symbench.core.board.plots import sample_efficiency_png
+    from symbench.core.common.arrays import ViewArrays
+    from symbench.core.common.errors import SymbenchError
+    from symbench.core.common.lazy import Lazy
+    from symbench.core.data import schema
+    from symbench.core.data.model_dims import ModelDims
+    from symbench.core.data.raw_action import act_on_raw, rotate_scene_about_gravity
+    from symbench.core.data.splits import SplitContext, carve_validation
+    from symbench.core.data.views import build_view
+    from symbench.core.plugin.entries import (
+        BACKENDS,
+        VARIANTS,
+        VIEWS,
+        EvaluatorEntry,
+        InvalidEntryError,
+        ModelEntry,
+        RobotEntry,
+        SplitEntry,
+    )
+    from symbench.core.plugin.registry import model as model_entry
+    from symbench.core.robot.specs import load_robot
+    from symbench.core.runs.evaluation import (
+        EvaluationContext,
+        TrainedOnSplit,
+        relative_error,
+        rmse,
+    )
+    from symbench.core.sim.learned_control import track
+    from symbench.core.sim.rollout import simulate
+    from symbench.core.sim.scenario import Scenario
+    from symbench.core.training.loop import TrainConfig, train

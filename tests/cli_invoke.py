@@ -14,8 +14,10 @@ def invoke(*args: str) -> Result:
     """The result of `symbench ARGS`; fails the test when an exception escaped."""
     result = CliRunner().invoke(build_cli(), [str(a) for a in args])
     if result.exception is not None and not isinstance(result.exception, SystemExit):
-        raise AssertionError("an exception escaped the command line:\n"
-                             + "".join(traceback.format_exception(result.exception)))
+        raise AssertionError(
+            "an exception escaped the command line:\n"
+            + "".join(traceback.format_exception(result.exception))
+        )
     return result
 
 
@@ -25,4 +27,4 @@ def error_line(result: Result, status: int) -> str:
     assert "Traceback" not in result.output
     errors = [line for line in result.stderr.splitlines() if line.startswith("Error")]
     assert len(errors) == 1, result.stderr
-    return " ".join(result.stderr[result.stderr.index(errors[0]):].split())
+    return " ".join(result.stderr[result.stderr.index(errors[0]) :].split())

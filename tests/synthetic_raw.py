@@ -1,4 +1,4 @@
-"""Synthetic raw trajectories that obey symbench/core/raw.py, and a stand-in simulator.
+"""Synthetic raw trajectories that obey symbench/core/sim/raw.py, and a stand-in simulator.
 
 They let storage, views, splits and generation be tested without MuJoCo: the numbers are
 random but shaped and typed exactly as the recorder writes them.
@@ -13,8 +13,8 @@ from pathlib import Path
 
 import numpy as np
 
-from symbench.core.errors import SymbenchError
-from symbench.core.scenario import Scenario
+from symbench.core.common.errors import SymbenchError
+from symbench.core.sim.scenario import Scenario
 
 RECORD_PERIOD = 0.006
 
@@ -68,5 +68,7 @@ def write_logs(folder, robot: str = "hexa", n_files: int = 6, n_steps: int = 20)
     folder.mkdir(parents=True, exist_ok=True)
     for i in range(n_files):
         np.savez(folder / f"run{i}.npz", **synthetic_raw(N_LEGS[robot], n_steps, seed=i))
-    (folder / "import.json").write_text(json.dumps({"robot": robot, "record_period_s": RECORD_PERIOD}))
+    (folder / "import.json").write_text(
+        json.dumps({"robot": robot, "record_period_s": RECORD_PERIOD})
+    )
     return folder

@@ -19,24 +19,24 @@ from rich.console import Console
 from rich.table import Table
 from rich.text import Text
 
-from symbench import __version__
-from symbench.core.entries import describe
-from symbench.core.errors import SymbenchError, UnknownNameError
-from symbench.core.jsonfile import one_line
-from symbench.core.lazy_group import LazyGroup
-from symbench.core.paths import dataset_ids
-from symbench.core.plugins import duplicate, get_host
-from symbench.core.registry import KINDS, collect, names
+from symbench.core.common.errors import SymbenchError, UnknownNameError
+from symbench.core.common.jsonfile import one_line
+from symbench.core.common.lazy_group import LazyGroup
+from symbench.core.common.paths import dataset_ids
+from symbench.core.common.version import __version__
+from symbench.core.plugin.entries import describe
+from symbench.core.plugin.host import duplicate, get_host
+from symbench.core.plugin.registry import KINDS, collect, names
 
 # name -> "module:attribute" of a click command, imported when first used.
 LAZY_COMMANDS: dict[str, str] = {
-    "run": "symbench.core.run_command:run",
-    "bench": "symbench.core.bench_cli:bench",
+    "run": "symbench.core.runs.run_cli:run",
+    "bench": "symbench.core.bench.cli:bench",
     "sim": "symbench.core.sim.cli:sim",
-    "leaderboard": "symbench.core.leaderboard_cli:leaderboard",
-    "publish": "symbench.core.leaderboard_cli:publish",
-    "sweep": "symbench.core.sweep_cli:sweep",
-    "verify": "symbench.core.verify_cli:verify",
+    "leaderboard": "symbench.core.board.cli:leaderboard",
+    "publish": "symbench.core.board.cli:publish",
+    "sweep": "symbench.core.runs.sweep_cli:sweep",
+    "verify": "symbench.core.runs.verify_cli:verify",
     "data": "symbench.core.data.cli:data",
     "check-equivariance": "symbench.testing.check_command:check_equivariance",
 }
@@ -69,8 +69,10 @@ class SymbenchGroup(LazyGroup):
                 raise
             if isinstance(exc, SymbenchError):
                 raise click.ClickException(str(exc)) from exc
-            raise click.ClickException(f"internal error: {one_line(f'{type(exc).__name__}: {exc}')}"
-                                       " (run with --debug for the traceback)") from exc
+            raise click.ClickException(
+                f"internal error: {one_line(f'{type(exc).__name__}: {exc}')}"
+                " (run with --debug for the traceback)"
+            ) from exc
         finally:
             report_plugin_problems(reported)  # ... and what its hooks raised meanwhile
 
@@ -80,22 +82,31 @@ class SymbenchGroup(LazyGroup):
         replacement (of `publish`, say)."""
         host = get_host()
         scratch: dict[str, click.Group] = {}
-        host.call_each("symbench_commands",
-                       lambda plugin: {"cli": scratch.setdefault(plugin, click.Group())})
+        host.call_each(
+            "symbench_commands", lambda plugin: {"cli": scratch.setdefault(plugin, click.Group())}
+        )
         for plugin, group in scratch.items():
             for name, command in group.commands.items():
                 if name in self.plugin_commands:
-                    raise duplicate("command", name, str(host.info[self.plugin_commands[name]]),
-                                    str(host.info[plugin]))
+                    raise duplicate(
+                        "command",
+                        name,
+                        str(host.info[self.plugin_commands[name]]),
+                        str(host.info[plugin]),
+                    )
                 if name in self.commands or name in self.lazy_commands:
-                    raise duplicate("command", name, f"symbench {__version__} (core)",
-                                    str(host.info[plugin]))
+                    raise duplicate(
+                        "command", name, f"symbench {__version__} (core)", str(host.info[plugin])
+                    )
                 self.add_command(command, name)
                 self.plugin_commands[name] = plugin
 
 
-@click.group(cls=SymbenchGroup, lazy_commands=LAZY_COMMANDS,
-             context_settings={"help_option_names": ["-h", "--help"]})
+@click.group(
+    cls=SymbenchGroup,
+    lazy_commands=LAZY_COMMANDS,
+    context_settings={"help_option_names": ["-h", "--help"]},
+)
 @click.version_option(__version__, prog_name="symbench")
 @click.option("--debug", is_flag=True, help="Show the traceback of any error.")
 def cli(debug: bool) -> None:
@@ -144,16 +155,24 @@ def plugins_command(ctx: click.Context) -> None:
     and version (JSON)."""
     host = get_host()
     registered = names(host)  # calls every hook first, so plugins that raise are listed too
-    registered += [host.registered("command", name, plugin)
-                   for name, plugin in ctx.find_root().command.plugin_commands.items()]
+    registered += [
+        host.registered("command", name, plugin)
+        for name, plugin in ctx.find_root().command.plugin_commands.items()
+    ]
     click.echo(json.dumps({**host.describe(), "names": registered}, indent=2))
 
 
 def build_cli() -> click.Group:
     """A fresh command group: the core commands plus those that plugins add."""
-    group = SymbenchGroup(name=cli.name, commands=dict(cli.commands), callback=cli.callback,
-                          params=cli.params, help=cli.help, lazy_commands=LAZY_COMMANDS,
-                          context_settings=cli.context_settings)
+    group = SymbenchGroup(
+        name=cli.name,
+        commands=dict(cli.commands),
+        callback=cli.callback,
+        params=cli.params,
+        help=cli.help,
+        lazy_commands=LAZY_COMMANDS,
+        context_settings=cli.context_settings,
+    )
     group.add_plugin_commands()
     return group
 

@@ -9,8 +9,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from symbench.core.entries import ModelEntry
-from symbench.core.lazy import Lazy
+from symbench import Lazy, ModelEntry
 
 
 @dataclass(frozen=True)
@@ -24,20 +23,55 @@ class Architecture:
 
 
 ARCHITECTURES = (
-    Architecture("ffnn", "ffnn", "vector", False, 1e-3,
-                 "MLP (3 x 256) on the stacked world-frame vector"),
-    Architecture("ffnn-leg", "ffnn", "leg_grouped", False, 1e-3,
-                 "the ffnn MLP on the flattened leg-grouped view"),
-    Architecture("gnn", "gnn", "body_graph", False, 1e-3,
-                 "typical graph network (bodies as nodes, joints as edges), 5 steps"),
-    Architecture("sdgnn", "sdgnn", "leg_grouped", True, 1e-3,
-                 "symmetric graph network: base and feet as nodes, legs as edges, 2 steps"),
-    Architecture("sdnn", "sdnn", "leg_grouped", True, 5e-4,
-                 "shared per-leg MLPs, sum over legs, 2 processing steps"),
+    Architecture(
+        "ffnn", "ffnn", "vector", False, 1e-3, "MLP (3 x 256) on the stacked world-frame vector"
+    ),
+    Architecture(
+        "ffnn-leg",
+        "ffnn",
+        "leg_grouped",
+        False,
+        1e-3,
+        "the ffnn MLP on the flattened leg-grouped view",
+    ),
+    Architecture(
+        "gnn",
+        "gnn",
+        "body_graph",
+        False,
+        1e-3,
+        "typical graph network (bodies as nodes, joints as edges), 5 steps",
+    ),
+    Architecture(
+        "sdgnn",
+        "sdgnn",
+        "leg_grouped",
+        True,
+        1e-3,
+        "symmetric graph network: base and feet as nodes, legs as edges, 2 steps",
+    ),
+    Architecture(
+        "sdnn",
+        "sdnn",
+        "leg_grouped",
+        True,
+        5e-4,
+        "shared per-leg MLPs, sum over legs, 2 processing steps",
+    ),
 )
 
 
 def model_entries(backend: str, package: str, variant: str = "acc") -> list[ModelEntry]:
-    return [ModelEntry(a.name, backend, a.view, variant, a.equivariant,
-                       Lazy(f"{package}.{a.module}:build"), a.learning_rate, a.description)
-            for a in ARCHITECTURES]
+    return [
+        ModelEntry(
+            a.name,
+            backend,
+            a.view,
+            variant,
+            a.equivariant,
+            Lazy(f"{package}.{a.module}:build"),
+            a.learning_rate,
+            a.description,
+        )
+        for a in ARCHITECTURES
+    ]

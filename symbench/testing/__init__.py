@@ -18,6 +18,15 @@ from symbench.testing.equivariance import (
 from symbench.testing.groups import BUILTIN_ROBOTS, robot_group
 from symbench.testing.synthetic import equivariant_target, synthetic_views
 
-__all__ = ["TOLERANCES", "EquivarianceReport", "assert_equivariant", "check_model",
-           "element_errors", "relative_error", "robot_group", "BUILTIN_ROBOTS",
-           "synthetic_views", "equivariant_target"]
+__all__ = [
+    "BUILTIN_ROBOTS",
+    "TOLERANCES",
+    "EquivarianceReport",
+    "assert_equivariant",
+    "check_model",
+    "element_errors",
+    "equivariant_target",
+    "relative_error",
+    "robot_group",
+    "synthetic_views",
+]

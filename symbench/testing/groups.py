@@ -2,12 +2,12 @@
 
 from __future__ import annotations
 
-from symbench.core.groups import LegGroup
+from symbench.core.symmetry.groups import LegGroup
 
 BUILTIN_ROBOTS = ("magneto", "hexa", "nona")
 
 
 def robot_group(name: str) -> LegGroup:
-    from symbench.core.robots import load_robot
+    from symbench.core.robot.specs import load_robot
 
     return load_robot(name).group

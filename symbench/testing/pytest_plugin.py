@@ -15,8 +15,8 @@ from typing import Any
 
 import pytest
 
-from symbench.core.entries import ModelEntry
-from symbench.core.groups import LegGroup
+from symbench.core.plugin.entries import ModelEntry
+from symbench.core.symmetry.groups import LegGroup
 
 
 @dataclass(frozen=True)
@@ -36,8 +36,11 @@ class Kit:
 
 def pytest_addoption(parser: pytest.Parser) -> None:
     parser.getgroup("symbench").addoption(
-        "--symbench-samples", type=int, default=32,
-        help="random inputs per group element in symbench's equivariance kit (default 32)")
+        "--symbench-samples",
+        type=int,
+        default=32,
+        help="random inputs per group element in symbench's equivariance kit (default 32)",
+    )
 
 
 @pytest.fixture

@@ -33,8 +33,9 @@ def test_plugins_and_list_give_json():
     assert isinstance(models, list)
 
 
-@pytest.mark.parametrize("args,expected", [(("lst",), "did you mean list"),
-                                           (("list", "robts"), "did you mean robots")])
+@pytest.mark.parametrize(
+    "args,expected", [(("lst",), "did you mean list"), (("list", "robts"), "did you mean robots")]
+)
 def test_unknown_names_are_clear_errors(args, expected):
     result = run(*args)
     assert result.returncode != 0

@@ -11,19 +11,24 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
-from symbench.core import registry
-from symbench.core.plugins import PluginHost
-from symbench.core.splits import SplitContext
+from symbench.core.data.splits import SplitContext
+from symbench.core.plugin import registry
+from symbench.core.plugin.host import PluginHost
 
 ROOT = Path(__file__).resolve().parents[2]
-HOOKS = ("symbench_models", "symbench_robots", "symbench_evaluators", "symbench_splits",
-         "symbench_commands")
+HOOKS = (
+    "symbench_models",
+    "symbench_robots",
+    "symbench_evaluators",
+    "symbench_splits",
+    "symbench_commands",
+)
 
 
 def hook_examples() -> dict[str, str]:
     """The first Python block under each hook's heading in 'The hooks' section."""
     text = (ROOT / "CONTRIBUTING.md").read_text()
-    section = text[text.index("## The hooks"):text.index("\n## ", text.index("## The hooks") + 5)]
+    section = text[text.index("## The hooks") : text.index("\n## ", text.index("## The hooks") + 5)]
     out = {}
     for hook in HOOKS:
         start = section.index(f"### `{hook}(")
@@ -49,9 +54,15 @@ def host_with(module: types.ModuleType) -> PluginHost:
     return host
 
 
-@pytest.mark.parametrize("hook,kind", [("symbench_models", "models"), ("symbench_robots", "robots"),
-                                       ("symbench_evaluators", "evaluators"),
-                                       ("symbench_splits", "splits")])
+@pytest.mark.parametrize(
+    "hook,kind",
+    [
+        ("symbench_models", "models"),
+        ("symbench_robots", "robots"),
+        ("symbench_evaluators", "evaluators"),
+        ("symbench_splits", "splits"),
+    ],
+)
 def test_collection_examples_register_an_entry(plugins, hook, kind):
     host = host_with(plugins[hook])
     entries = registry.collect(kind, host)
@@ -67,8 +78,9 @@ def test_evaluator_example_computes_its_metric(plugins):
 def test_split_example_labels_trajectories(plugins):
     (entry,) = registry.collect("splits", host_with(plugins["symbench_splits"])).values()
     scenarios = tuple({"inclination_deg": inc} for inc in [0, 30, 45, 90, 90, 0, 30, 60] * 3)
-    context = SplitContext("toy", np.arange(len(scenarios)), scenarios,
-                           np.full(len(scenarios), 10), 6, 0)
+    context = SplitContext(
+        "toy", np.arange(len(scenarios)), scenarios, np.full(len(scenarios), 10), 6, 0
+    )
     labels = np.asarray(entry.assign(context))
     steep = np.array([s["inclination_deg"] >= 60 for s in scenarios])
     assert (labels[steep] == "test").all()

@@ -5,11 +5,11 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from symbench.core import groups
-from symbench.core.errors import SymbenchError
-from symbench.core.group_checks import axiom_violations, homomorphism_violations
-from symbench.core.groups import GroupElement, LegGroup, act
-from symbench.core.schema import TARGET, leg_grouped_input
+from symbench.core.common.errors import SymbenchError
+from symbench.core.data.schema import TARGET, leg_grouped_input
+from symbench.core.symmetry import groups
+from symbench.core.symmetry.checks import axiom_violations, homomorphism_violations
+from symbench.core.symmetry.groups import GroupElement, LegGroup, act
 
 GROUPS = {
     "C2 (magneto: 4 legs, shift 2)": (lambda: groups.cyclic(4, 2), 2, 4),
@@ -47,8 +47,11 @@ def test_cayley_table_is_a_latin_square(group_case):
 
 
 @pytest.mark.parametrize("dtype", [np.float64, np.float32])
-@pytest.mark.parametrize("layout", [leg_grouped_input("acc"), leg_grouped_input("next"), TARGET],
-                         ids=lambda lay: lay.name)
+@pytest.mark.parametrize(
+    "layout",
+    [leg_grouped_input("acc"), leg_grouped_input("next"), TARGET],
+    ids=lambda lay: lay.name,
+)
 def test_action_is_a_homomorphism(group_case, layout, dtype):
     group, _, legs = group_case
     x = np.random.default_rng(0).normal(size=(5, legs, layout.size)).astype(dtype)
@@ -147,8 +150,10 @@ def test_bad_input_is_named():
         groups.cyclic(6).act(groups.mirror(6, 0), np.zeros((6, 3)), [1, 1, 1])
 
 
-@pytest.mark.parametrize("kind,n,k,order", [("cyclic", 4, 2, 2), ("cyclic", 6, 1, 6),
-                                            ("dihedral", 6, 1, 12), ("klein4", 4, 2, 4)])
+@pytest.mark.parametrize(
+    "kind,n,k,order",
+    [("cyclic", 4, 2, 2), ("cyclic", 6, 1, 6), ("dihedral", 6, 1, 12), ("klein4", 4, 2, 4)],
+)
 def test_from_spec(kind, n, k, order):
     assert groups.from_spec(n, kind, k).order == order
 

@@ -6,9 +6,9 @@ import json
 
 import pytest
 
-from symbench.core.errors import SymbenchError
-from symbench.core.leaderboard import aggregate, load_records, write_leaderboard
-from symbench.core.results import write_record
+from symbench.core.board.leaderboard import aggregate, load_records, write_leaderboard
+from symbench.core.common.errors import SymbenchError
+from symbench.core.runs.results import write_record
 
 
 def write_runs(folder, make_record, runs):
@@ -43,14 +43,23 @@ def test_refuses_duplicate_runs(tmp_path, make_record):
 
 
 def test_tables_and_plot_regenerate_identically(tmp_path, make_record):
-    runs = [dict(model=m, split=f"fraction-{f}", seed=s, rmse=r * (1 + s / 10) / f)
-            for m, r in (("sdnn", 0.1), ("ffnn", 0.5)) for f in (0.1, 0.5) for s in range(3)]
+    runs = [
+        dict(model=m, split=f"fraction-{f}", seed=s, rmse=r * (1 + s / 10) / f)
+        for m, r in (("sdnn", 0.1), ("ffnn", 0.5))
+        for f in (0.1, 0.5)
+        for s in range(3)
+    ]
     runs += [dict(robot="nona", model="sdnn", seed=s) for s in range(2)]
     write_runs(tmp_path / "records", make_record, runs)
     first = write_leaderboard(tmp_path / "records", tmp_path / "out")
     names = sorted(p.name for p in first)
-    assert names == ["hexa-sample-efficiency.png", "hexa.md", "leaderboard.csv", "nona.md",
-                     "summary.md"]
+    assert names == [
+        "hexa-sample-efficiency.png",
+        "hexa.md",
+        "leaderboard.csv",
+        "nona.md",
+        "summary.md",
+    ]
     before = {p.name: p.read_bytes() for p in first}
     second = write_leaderboard(tmp_path / "records", tmp_path / "out")
     assert {p.name: p.read_bytes() for p in second} == before
@@ -78,11 +87,12 @@ def test_checkpoint_files_beside_the_records_are_not_read(tmp_path, make_record)
     assert len(load_records(tmp_path)) == 3
 
 
-
 def test_schema_1_records_are_still_shown(tmp_path, make_record, as_schema_1):
     (tmp_path / "records").mkdir()
     for s in range(3):
-        (tmp_path / "records" / f"r{s}.json").write_text(json.dumps(as_schema_1(make_record(seed=s))))
+        (tmp_path / "records" / f"r{s}.json").write_text(
+            json.dumps(as_schema_1(make_record(seed=s)))
+        )
     write_leaderboard(tmp_path / "records", tmp_path / "out")
     assert "| 1 | sdnn | acc | torch | 3 |" in (tmp_path / "out" / "hexa.md").read_text()
 
@@ -98,4 +108,9 @@ def test_output_names_cannot_leave_the_output_folder(tmp_path, make_record, as_s
     with pytest.raises(SymbenchError, match="robot: String should match pattern"):
         write_leaderboard(records, out)
     assert sorted(p.relative_to(tmp_path).as_posix() for p in tmp_path.rglob("*")) == [
-        "a", "a/records", "a/records/r0.json", "a/records/r1.json", "a/records/r2.json"]
+        "a",
+        "a/records",
+        "a/records/r0.json",
+        "a/records/r1.json",
+        "a/records/r2.json",
+    ]

@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import pytest
 
-from symbench.core import leaderboard
-from symbench.core.leaderboard import aggregate, load_records, sample_efficiency_plot
-from symbench.core.leaderboard_summary import headline
-from symbench.core.results import write_record
+from symbench.core.board import leaderboard
+from symbench.core.board.leaderboard import aggregate, load_records, sample_efficiency_plot
+from symbench.core.board.summary import headline
+from symbench.core.runs.results import write_record
 
 
 def write_runs(folder, make_record, runs):
@@ -16,9 +16,12 @@ def write_runs(folder, make_record, runs):
 
 
 def test_models_are_columns_and_splits_are_ordered(tmp_path, make_record):
-    runs = [dict(model=m, split=split, seed=s, rmse=r + s / 100)
-            for m, r in (("sdnn", 0.1), ("ffnn", 1.0))
-            for split in ("unseen-rotation", "iid", "fraction-0.5") for s in range(3)]
+    runs = [
+        dict(model=m, split=split, seed=s, rmse=r + s / 100)
+        for m, r in (("sdnn", 0.1), ("ffnn", 1.0))
+        for split in ("unseen-rotation", "iid", "fraction-0.5")
+        for s in range(3)
+    ]
     write_runs(tmp_path, make_record, runs)
     page = headline(aggregate(load_records(tmp_path)))
     rows = [line for line in page.splitlines() if line.startswith("| ")]
@@ -32,20 +35,28 @@ def test_models_are_columns_and_splits_are_ordered(tmp_path, make_record):
 def test_closed_loop_section_shows_alone_and_with_pd(tmp_path, make_record):
     for s in range(3):
         record = make_record(seed=s)
-        record["metrics"]["closed-loop"] = {"time_to_failure_s": 1.0 + s, "success_rate": 0.0,
-                                            "pd_time_to_failure_s": 10.0, "pd_success_rate": 1.0}
+        record["metrics"]["closed-loop"] = {
+            "time_to_failure_s": 1.0 + s,
+            "success_rate": 0.0,
+            "pd_time_to_failure_s": 10.0,
+            "pd_success_rate": 1.0,
+        }
         write_record(record, tmp_path / f"r{s}.json")
     page = headline(aggregate(load_records(tmp_path)))
     assert "| hexa | iid | 2 / 10 |" in page
 
 
 def test_sample_efficiency_curve_ends_with_iid_at_one(tmp_path, make_record, monkeypatch):
-    runs = [dict(model="sdnn", split=split, seed=s, rmse=r)
-            for split, r in (("fraction-0.25", 0.4), ("iid", 0.1)) for s in range(3)]
+    runs = [
+        dict(model="sdnn", split=split, seed=s, rmse=r)
+        for split, r in (("fraction-0.25", 0.4), ("iid", 0.1))
+        for s in range(3)
+    ]
     write_runs(tmp_path, make_record, runs)
     drawn = {}
-    monkeypatch.setattr(leaderboard, "sample_efficiency_png",
-                        lambda curves, title, path: drawn.update(curves))
+    monkeypatch.setattr(
+        leaderboard, "sample_efficiency_png", lambda curves, title, path: drawn.update(curves)
+    )
     assert sample_efficiency_plot(aggregate(load_records(tmp_path)), "hexa", tmp_path / "p.png")
     fractions, means, _ = drawn["sdnn (acc, torch)"]
     assert fractions == [0.25, 1.0] and means == pytest.approx([0.4, 0.1])

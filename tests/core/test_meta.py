@@ -5,14 +5,15 @@ from __future__ import annotations
 import inspect
 from pathlib import Path
 
-from symbench.core import hookspecs
+from symbench.core.plugin import hookspecs
 
 ROOT = Path(__file__).resolve().parents[2]
 
 
 def hook_names() -> list[str]:
-    return [n for n, f in inspect.getmembers(hookspecs, inspect.isfunction)
-            if n.startswith("symbench_")]
+    return [
+        n for n, f in inspect.getmembers(hookspecs, inspect.isfunction) if n.startswith("symbench_")
+    ]
 
 
 def missing_from(names: list[str], texts: list[str]) -> list[str]:
@@ -25,8 +26,13 @@ def texts_of_tests() -> list[str]:
 
 
 def test_there_are_hooks():
-    assert set(hook_names()) >= {"symbench_models", "symbench_robots", "symbench_evaluators",
-                                 "symbench_splits", "symbench_commands"}
+    assert set(hook_names()) >= {
+        "symbench_models",
+        "symbench_robots",
+        "symbench_evaluators",
+        "symbench_splits",
+        "symbench_commands",
+    }
 
 
 def test_every_hook_is_documented():

@@ -15,15 +15,18 @@ import pytest
 from click.testing import CliRunner
 
 from symbench import __version__, hookimpl
-from symbench.core import plugins, registry
 from symbench.core.cli import build_cli, main
-from symbench.core.entries import EvaluatorEntry, ModelEntry, RobotEntry, SplitEntry
-from symbench.core.errors import SymbenchError, UnknownNameError
-from symbench.core.plugins import PluginHost, set_host
+from symbench.core.common.errors import SymbenchError, UnknownNameError
+from symbench.core.plugin import host as plugins
+from symbench.core.plugin import registry
+from symbench.core.plugin.entries import EvaluatorEntry, ModelEntry, RobotEntry, SplitEntry
+from symbench.core.plugin.host import PluginHost, set_host
 
 GHOST = EntryPoint("ghost", "symbench_no_such_module_xyz", "symbench")
-GHOST_WARNING = ("warning: plugin 'ghost' failed to import: ModuleNotFoundError: "
-                 "No module named 'symbench_no_such_module_xyz'")
+GHOST_WARNING = (
+    "warning: plugin 'ghost' failed to import: ModuleNotFoundError: "
+    "No module named 'symbench_no_such_module_xyz'"
+)
 
 
 class ToyPlugin:
@@ -31,8 +34,10 @@ class ToyPlugin:
 
     @hookimpl
     def symbench_models(self):
-        return [ModelEntry("toy", "torch", "leg_grouped", "acc", True, build=lambda dims: None),
-                ModelEntry("toy", "jax", "leg_grouped", "acc", True, build=lambda dims: None)]
+        return [
+            ModelEntry("toy", "torch", "leg_grouped", "acc", True, build=lambda dims: None),
+            ModelEntry("toy", "jax", "leg_grouped", "acc", True, build=lambda dims: None),
+        ]
 
     @hookimpl
     def symbench_robots(self):
@@ -142,8 +147,11 @@ def test_broken_plugin_is_named_and_others_keep_working(host):
     assert [r["name"] for r in json.loads(result.stdout)] == ["tripod"]
     assert "broken-robots" in result.stderr and "spec folder vanished" in result.stderr
     described = json.loads(invoke("plugins").stdout)
-    assert {"plugin": "broken-robots", "where": "symbench_robots",
-            "error": "RuntimeError: spec folder vanished"} in described["problems"]
+    assert {
+        "plugin": "broken-robots",
+        "where": "symbench_robots",
+        "error": "RuntimeError: spec folder vanished",
+    } in described["problems"]
     assert invoke("list", "models", "--json").exit_code == 0
 
 
@@ -156,11 +164,15 @@ def test_plugin_that_fails_to_import_is_named(monkeypatch):
     assert "ModuleNotFoundError" in h.problems[0].error and h.problems[0].where == "import"
 
 
-@pytest.mark.parametrize("allowed,loaded", [("all", True), ("none", False), ("", False),
-                                            ("other,tester", True), ("other", False)])
+@pytest.mark.parametrize(
+    "allowed,loaded",
+    [("all", True), ("none", False), ("", False), ("other,tester", True), ("other", False)],
+)
 def test_environment_variable_restricts_third_party(monkeypatch, allowed, loaded):
-    eps = [EntryPoint("tester", "symbench.core.errors", "symbench"),
-           EntryPoint("other", "symbench.core.entries", "symbench")]
+    eps = [
+        EntryPoint("tester", "symbench.core.common.errors", "symbench"),
+        EntryPoint("other", "symbench.core.plugin.entries", "symbench"),
+    ]
     monkeypatch.setattr(plugins, "entry_points", lambda group: eps)
     monkeypatch.setenv(plugins.ENV_VAR, allowed)
     h = PluginHost()
@@ -178,7 +190,8 @@ def test_wrong_type_is_a_problem_of_the_plugin(host):
     host.register(Wrong(), "wrong")
     assert list(registry.collect("splits", host)) == ["other-split", "toy-split"]
     assert [str(p) for p in host.problems] == [
-        "plugin 'wrong' failed in symbench_splits: returned str, expected SplitEntry"]
+        "plugin 'wrong' failed in symbench_splits: returned str, expected SplitEntry"
+    ]
 
 
 def test_unknown_names_get_the_closest(host):
@@ -200,11 +213,17 @@ def test_plugins_command_lists_hooks(host):
     described = json.loads(invoke("plugins").stdout)
     (toy,) = described["plugins"]
     assert toy["name"] == "toy" and toy["version"] == "1.2" and toy["builtin"] is False
-    assert toy["hooks"] == ["symbench_commands", "symbench_evaluators", "symbench_models",
-                            "symbench_robots", "symbench_splits"]
+    assert toy["hooks"] == [
+        "symbench_commands",
+        "symbench_evaluators",
+        "symbench_models",
+        "symbench_robots",
+        "symbench_splits",
+    ]
 
 
 # Guard 1: a name registered twice is an error naming both distributions, built-ins included.
+
 
 @pytest.mark.parametrize("entry_point", ["aaa_models", "zzz_models"])  # sorts before / after
 def test_a_builtin_model_name_taken_by_another_distribution_is_an_error(monkeypatch, entry_point):
@@ -222,7 +241,8 @@ def test_a_builtin_model_name_taken_by_another_distribution_is_an_error(monkeypa
     assert result.exit_code == 1
     assert lines(result.stderr) == [
         f"Error: model 'sdnn/torch' is registered twice: by {first} and by {second}; "
-        "uninstall one or leave it out of SYMBENCH_PLUGINS"]
+        "uninstall one or leave it out of SYMBENCH_PLUGINS"
+    ]
 
 
 def test_an_entry_point_name_declared_by_two_distributions_is_an_error(monkeypatch):
@@ -232,7 +252,8 @@ def test_an_entry_point_name_declared_by_two_distributions_is_an_error(monkeypat
     assert str(error.value) == (
         f"plugin entry point 'torch_models' is registered twice: by plugin 'torch_models' "
         f"(symbench {__version__}) and by plugin 'torch_models' (evil-dist 6.6.6); "
-        "uninstall one or leave it out of SYMBENCH_PLUGINS")
+        "uninstall one or leave it out of SYMBENCH_PLUGINS"
+    )
 
 
 def test_a_core_command_name_taken_by_a_plugin_is_an_error(host):
@@ -241,7 +262,8 @@ def test_a_core_command_name_taken_by_a_plugin_is_an_error(host):
         build_cli()
     assert str(error.value) == (
         f"command 'publish' is registered twice: by symbench {__version__} (core) and by "
-        "plugin 'publisher' (evil-dist 6.6.6); uninstall one or leave it out of SYMBENCH_PLUGINS")
+        "plugin 'publisher' (evil-dist 6.6.6); uninstall one or leave it out of SYMBENCH_PLUGINS"
+    )
 
 
 def test_a_plugin_command_name_taken_by_another_plugin_is_an_error(host):
@@ -251,20 +273,27 @@ def test_a_plugin_command_name_taken_by_another_plugin_is_an_error(host):
         build_cli()
     assert str(error.value) == (
         "command 'toy-hello' is registered twice: by plugin 'toy' (toy-dist 1.2) and by "
-        "plugin 'copycat' (in-process); uninstall one or leave it out of SYMBENCH_PLUGINS")
+        "plugin 'copycat' (in-process); uninstall one or leave it out of SYMBENCH_PLUGINS"
+    )
 
 
 # Guard 2: `symbench plugins` lists every registered name with its distribution and version.
 
+
 def test_plugins_command_lists_every_name_with_its_distribution():
     set_host(None)  # the installed plugins: symbench's built-ins and the example plugin
     described = json.loads(invoke("plugins").stdout)
-    listed = {(n["kind"], n["name"]): (n["plugin"], n["distribution"], n["version"])
-              for n in described["names"]}
+    listed = {
+        (n["kind"], n["name"]): (n["plugin"], n["distribution"], n["version"])
+        for n in described["names"]
+    }
     assert listed[("model", "sdnn/torch")] == ("torch_models", "symbench", __version__)
     assert listed[("model", "sdnn/jax")] == ("jax_models", "symbench", __version__)
-    assert listed[("model", "leg-attention/torch")] == ("example_models",
-                                                        "symbench-example-plugin", "0.1.0")
+    assert listed[("model", "leg-attention/torch")] == (
+        "example_models",
+        "symbench-example-plugin",
+        "0.1.0",
+    )
     assert listed[("robot", "hexa")] == ("robots", "symbench", __version__)
     registered = {(kind[:-1], key) for kind in registry.KINDS for key in registry.collect(kind)}
     assert set(listed) == registered and len(described["names"]) == len(registered)
@@ -273,14 +302,25 @@ def test_plugins_command_lists_every_name_with_its_distribution():
 def test_plugins_command_lists_plugin_commands(host):
     host.register(ToyPlugin(), "toy", distribution="toy-dist", version="1.2")
     names = json.loads(invoke("plugins").stdout)["names"]
-    assert {"kind": "command", "name": "toy-hello", "plugin": "toy", "distribution": "toy-dist",
-            "version": "1.2"} in names
-    assert {"kind": "model", "name": "toy/jax", "plugin": "toy", "distribution": "toy-dist",
-            "version": "1.2"} in names
+    assert {
+        "kind": "command",
+        "name": "toy-hello",
+        "plugin": "toy",
+        "distribution": "toy-dist",
+        "version": "1.2",
+    } in names
+    assert {
+        "kind": "model",
+        "name": "toy/jax",
+        "plugin": "toy",
+        "distribution": "toy-dist",
+        "version": "1.2",
+    } in names
 
 
 # Guard 3: a plugin that fails to import is reported by every command, one line each, and a
 # name it may have provided says so.
+
 
 def test_every_command_reports_a_plugin_that_failed_to_import(monkeypatch):
     installed_and(monkeypatch, GHOST)
@@ -308,22 +348,28 @@ def test_run_names_the_plugin_that_failed_for_an_unknown_model(monkeypatch):
     h.register(ToyPlugin(), "toy")
     set_host(h)
     try:
-        result = CliRunner().invoke(build_cli(),
-                                    ["run", "--model", "ghost-net", "--robot", "tripod"])
+        result = CliRunner().invoke(
+            build_cli(), ["run", "--model", "ghost-net", "--robot", "tripod"]
+        )
     finally:
         set_host(None)
     assert result.exit_code == 1
     assert lines(result.stderr) == [
         GHOST_WARNING,
-        "Error: unknown model 'ghost-net' (known: toy); plugin 'ghost' (ModuleNotFoundError: No "
-        "module named 'symbench_no_such_module_xyz') failed to import and may provide it"]
+        "Error: unknown model 'ghost-net' (known: toy); it may be lost with what failed: plugin "
+        "'ghost' failed to import: ModuleNotFoundError: No module named "
+        "'symbench_no_such_module_xyz'",
+    ]
 
 
 # Guard 4: a name in SYMBENCH_PLUGINS that is not installed is an error.
 
+
 def test_unknown_name_in_symbench_plugins_is_an_error(monkeypatch, capsys):
-    eps = [EntryPoint("tester", "symbench.core.errors", "symbench"),
-           EntryPoint("example_models", "symbench.core.entries", "symbench")]
+    eps = [
+        EntryPoint("tester", "symbench.core.common.errors", "symbench"),
+        EntryPoint("example_models", "symbench.core.plugin.entries", "symbench"),
+    ]
     monkeypatch.setattr(plugins, "entry_points", lambda group: eps)
     monkeypatch.setenv(plugins.ENV_VAR, "tester, exmple_models")
     monkeypatch.setattr("sys.argv", ["symbench", "list", "models"])
@@ -333,6 +379,7 @@ def test_unknown_name_in_symbench_plugins_is_an_error(monkeypatch, capsys):
     assert exit_.value.code == 1
     assert lines(capsys.readouterr().err) == [
         "error: SYMBENCH_PLUGINS: unknown plugin 'exmple_models'; did you mean example_models? "
-        "(known: example_models, tester)"]
+        "(known: example_models, tester)"
+    ]
     with pytest.raises(SymbenchError):  # no half-loaded host was left behind
         plugins.get_host()

@@ -7,9 +7,9 @@ import json
 
 import pytest
 
-from symbench.core.errors import SymbenchError
-from symbench.core.provenance import hardware, library_versions
-from symbench.core.results import read_display_record, read_record, seal_of, write_record
+from symbench.core.common.errors import SymbenchError
+from symbench.core.data.provenance import hardware, library_versions
+from symbench.core.runs.results import read_display_record, read_record, seal_of, write_record
 
 
 @pytest.fixture
@@ -70,7 +70,9 @@ def test_an_edited_metric_breaks_the_seal(valid_record, tmp_path):
     path.write_text(path.read_text().replace('"rmse": 0.5', '"rmse": 0.05'))
     with pytest.raises(SymbenchError) as error:
         read_record(path)
-    assert str(error.value) == f"{path}: record does not match its seal (edited after it was written)"
+    assert (
+        str(error.value) == f"{path}: record does not match its seal (edited after it was written)"
+    )
     with pytest.raises(SymbenchError, match="does not match its seal"):
         read_display_record(path)  # not even shown
     data = json.loads(path.read_text())
@@ -79,8 +81,9 @@ def test_an_edited_metric_breaks_the_seal(valid_record, tmp_path):
     assert read_record(path).metrics["torque-error"]["rmse"] == 0.05
 
 
-@pytest.mark.parametrize("field, value", [("robot", "../../x"), ("split", "a/b"),
-                                          ("model.name", ".hidden")])
+@pytest.mark.parametrize(
+    "field, value", [("robot", "../../x"), ("split", "a/b"), ("model.name", ".hidden")]
+)
 def test_names_must_be_safe_identifiers(valid_record, tmp_path, field, value):
     record = valid_record()
     where = record

@@ -5,16 +5,32 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from symbench.core.errors import UnknownNameError
-from symbench.core.schema import (
-    TARGET, FeatureType, body_graph, leg_grouped_input, vector_input, vector_target,
+from symbench.core.common.errors import UnknownNameError
+from symbench.core.data.schema import (
+    TARGET,
+    FeatureType,
+    body_graph,
+    leg_grouped_input,
+    vector_input,
+    vector_target,
 )
 
 
 def test_variant_layouts():
     acc, nxt = leg_grouped_input("acc"), leg_grouped_input("next")
     assert acc.feature_names == ("q", "qd", "qdd", "w", "a", "g", "p", "contact", "magnet")
-    assert nxt.feature_names == ("q", "qd", "q_next", "qd_next", "w", "a", "g", "p", "contact", "magnet")
+    assert nxt.feature_names == (
+        "q",
+        "qd",
+        "q_next",
+        "qd_next",
+        "w",
+        "a",
+        "g",
+        "p",
+        "contact",
+        "magnet",
+    )
     assert acc.size == 3 * 7 + 2 and nxt.size == 3 * 8 + 2
     assert TARGET.column_names == ("tau.coxa", "tau.femur", "tau.tibia")
     assert len(set(acc.column_names)) == acc.size

@@ -5,7 +5,7 @@ from __future__ import annotations
 import dataclasses
 
 from symbench.core.data.presets import preset
-from symbench.core.robots import load_robot
+from symbench.core.robot.specs import load_robot
 
 
 def short_grid(robot: str, name: str = "small", seconds: float = 0.1):

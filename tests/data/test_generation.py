@@ -8,15 +8,19 @@ import shutil
 import pytest
 from synthetic_raw import fake_simulate
 
+from symbench.core.common.errors import SymbenchError
 from symbench.core.data import load_dataset
 from symbench.core.data.generation import generate, record_path
 from symbench.core.data.metadata import dataset_dir
-from symbench.core.errors import SymbenchError
-from symbench.core.scenario import Scenario
+from symbench.core.sim.scenario import Scenario
 
 
 def _files(root):
-    return {p.relative_to(root).as_posix(): p.read_bytes() for p in sorted(root.rglob("*")) if p.is_file()}
+    return {
+        p.relative_to(root).as_posix(): p.read_bytes()
+        for p in sorted(root.rglob("*"))
+        if p.is_file()
+    }
 
 
 def test_generating_twice_gives_identical_files_and_hash(smoke_hexa, home, tmp_path, monkeypatch):
@@ -31,8 +35,14 @@ def test_generating_twice_gives_identical_files_and_hash(smoke_hexa, home, tmp_p
 
 def test_detached_trajectories_are_recorded_and_left_out(home):
     grid = [Scenario("magneto", seed=s, seconds=0.1) for s in (0, 13, 1, 14, 2)]
-    report = generate("magneto", "smoke", simulator=fake_simulate, show_progress=False,
-                      scenarios=grid, id_override="magneto-fails")
+    report = generate(
+        "magneto",
+        "smoke",
+        simulator=fake_simulate,
+        show_progress=False,
+        scenarios=grid,
+        id_override="magneto-fails",
+    )
     assert (report.n_trajectories, report.n_failed) == (3, 2)
     ds = load_dataset("magneto-fails")
     assert ds.trajectory_ids.tolist() == [0, 2, 4]
@@ -60,8 +70,12 @@ def test_an_interrupted_generation_resumes_and_keeps_finished_work(home, tmp_pat
     assert len(kept) == 2
 
     resumed = []
-    report = generate("hexa", "smoke", simulator=lambda s, record_period: resumed.append(s)
-                      or fake_simulate(s, record_period), show_progress=False)
+    report = generate(
+        "hexa",
+        "smoke",
+        simulator=lambda s, record_period: resumed.append(s) or fake_simulate(s, record_period),
+        show_progress=False,
+    )
     assert report.n_simulated == 2 and len(resumed) == 2 and not set(resumed) & set(calls)
     assert all((root / "trajectories" / n).stat().st_mtime_ns == t for n, t in kept.items())
 
@@ -115,8 +129,8 @@ def test_a_stale_record_is_simulated_again(smoke_hexa):
 
 def test_metadata_names_its_provenance(smoke_hexa):
     meta = load_dataset(smoke_hexa.dataset_id).metadata
-    from symbench.core.raw import SCHEMA_VERSION
-    from symbench.core.robots import load_robot
+    from symbench.core.robot.specs import load_robot
+    from symbench.core.sim.raw import SCHEMA_VERSION
 
     assert meta["raw_schema_version"] == SCHEMA_VERSION
     assert meta["robot_spec_hash"] == load_robot("hexa").spec_hash()
@@ -129,8 +143,11 @@ def test_ensure_dataset_generates_only_when_missing(home, monkeypatch):
     from symbench.core.data import generation
 
     calls = []
-    monkeypatch.setattr(generation, "default_simulator",
-                        lambda: lambda s, record_period: calls.append(s) or fake_simulate(s, record_period))
+    monkeypatch.setattr(
+        generation,
+        "default_simulator",
+        lambda: lambda s, record_period: calls.append(s) or fake_simulate(s, record_period),
+    )
     ds = generation.ensure_dataset("hexa", "smoke", workers=1, show_progress=False)
     assert len(calls) == 4 and ds.id == "hexa-climb-smoke-v4"
     assert generation.ensure_dataset("hexa", "smoke", workers=1).content_hash == ds.content_hash
@@ -139,7 +156,7 @@ def test_ensure_dataset_generates_only_when_missing(home, monkeypatch):
 
 def test_a_changed_robot_spec_is_noticed_and_ensure_dataset_rebuilds(smoke_hexa, monkeypatch):
     from symbench.core.data import generation
-    from symbench.core.robots import RobotSpec
+    from symbench.core.robot.specs import RobotSpec
 
     monkeypatch.setattr(RobotSpec, "spec_hash", lambda self: "an edited robot.toml")
     with pytest.raises(SymbenchError, match="robot.toml changed.*--robot hexa --preset smoke"):
@@ -160,6 +177,9 @@ def test_a_stand_in_simulator_runs_in_process_even_after_proxsuite_loaded(home, 
 
     monkeypatch.setitem(sys.modules, "proxsuite", types.SimpleNamespace(_submodule=None))
     assert not determinism.portable_qp_in_process()
-    monkeypatch.setattr(generation, "default_simulator",
-                        lambda: lambda s, record_period: fake_simulate(s, record_period))
+    monkeypatch.setattr(
+        generation,
+        "default_simulator",
+        lambda: lambda s, record_period: fake_simulate(s, record_period),
+    )
     assert generation.ensure_dataset("hexa", "smoke", workers=1, show_progress=False).n_legs == 6

@@ -11,12 +11,11 @@ import pytest
 from click.testing import CliRunner
 from synthetic_raw import synthetic_raw
 
-from symbench.core import schema
 from symbench.core.cli import build_cli
-from symbench.core.data import load_dataset
+from symbench.core.common.errors import SymbenchError
+from symbench.core.data import load_dataset, schema
 from symbench.core.data.columns import flatten
 from symbench.core.data.importer import export_dataset, import_logs
-from symbench.core.errors import SymbenchError
 
 
 @pytest.mark.parametrize("fmt", ["parquet", "npz"])
@@ -32,7 +31,9 @@ def test_export_then_import_gives_identical_views_and_splits(smoke_hexa, tmp_pat
                 np.testing.assert_array_equal(a.inputs[key], b.inputs[key])
             np.testing.assert_array_equal(a.target, b.target)
     for split in ("iid", "unseen-heading", "unseen-rotation"):
-        assert original.split_indices(split, 2).to_dict() == imported.split_indices(split, 2).to_dict()
+        assert (
+            original.split_indices(split, 2).to_dict() == imported.split_indices(split, 2).to_dict()
+        )
     with pytest.raises(SymbenchError, match="already exists"):
         import_logs(folder, "hexa-logs")
     import_logs(folder, "hexa-logs", force=True)
@@ -64,17 +65,32 @@ def test_a_minimal_log_folder_imports_without_a_scenario(home, tmp_path):
 
 BAD = {
     "missing column": (dict(edit=lambda c: c.pop("q.leg3.femur")), "missing column.*q.leg3.femur"),
-    "nan": (dict(edit=lambda c: c["base_linacc.y"].__setitem__(5, np.nan)), "base_linacc.*NaN.*step 5"),
+    "nan": (
+        dict(edit=lambda c: c["base_linacc.y"].__setitem__(5, np.nan)),
+        "base_linacc.*NaN.*step 5",
+    ),
     "unknown robot": (dict(robot="hexapod"), "unknown robot 'hexapod'.*hexa"),
     "leg count": (dict(n_legs=4), "4 legs, robot 'hexa' has 6"),
     "rate": (dict(period=0.001), "record_period_s = 0.001"),
     "flag": (dict(edit=lambda c: c["contact.leg0"].__setitem__(3, 2)), "contact.*only 0 and 1"),
-    "npz length": (dict(fmt="npz", edit=lambda r: r.update(qd=r["qd"][:-1])), "'qd' has 19 steps.*'t' has 20 steps"),
+    "npz length": (
+        dict(fmt="npz", edit=lambda r: r.update(qd=r["qd"][:-1])),
+        "'qd' has 19 steps.*'t' has 20 steps",
+    ),
     "npz legs": (dict(fmt="npz", n_legs=9), "'q' has 9 legs, robot 'hexa' has 6"),
-    "npz nan": (dict(fmt="npz", edit=lambda r: r["q"].__setitem__((2, 1, 0), np.inf)), "'q' has NaN or inf"),
+    "npz nan": (
+        dict(fmt="npz", edit=lambda r: r["q"].__setitem__((2, 1, 0), np.inf)),
+        "'q' has NaN or inf",
+    ),
     "too short": (dict(n_steps=1), "at least 2"),
-    "text": (dict(edit=lambda c: c.__setitem__("qdd.leg1.tibia", np.array(["x"] * 20))), "'qdd' is not numeric"),
-    "npz scalar": (dict(fmt="npz", edit=lambda r: r.update(tau=np.float64(1.0))), "'tau' has no time axis"),
+    "text": (
+        dict(edit=lambda c: c.__setitem__("qdd.leg1.tibia", np.array(["x"] * 20))),
+        "'qdd' is not numeric",
+    ),
+    "npz scalar": (
+        dict(fmt="npz", edit=lambda r: r.update(tau=np.float64(1.0))),
+        "'tau' has no time axis",
+    ),
 }
 
 

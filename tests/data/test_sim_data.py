@@ -5,12 +5,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from symbench.core import schema
+from symbench.core.data import schema
 from symbench.core.data.frames import LegFrames
 from symbench.core.data.raw_action import act_on_raw, rotate_scene_about_gravity
 from symbench.core.data.views import build_view
-from symbench.core.robots import load_robot
-from symbench.core.scenario import Scenario
+from symbench.core.robot.specs import load_robot
+from symbench.core.sim.scenario import Scenario
 
 sim = pytest.importorskip("symbench.core.sim.rollout")
 
@@ -20,8 +20,10 @@ SECONDS = 0.3
 @pytest.fixture(scope="module")
 def rollouts():
     """A short wall climb per robot (the arrays are usable whether or not it stayed on)."""
-    return {r: sim.simulate(Scenario(r, inclination_deg=90.0, yaw_deg=20.0, seconds=SECONDS))
-            for r in ("magneto", "hexa", "nona")}
+    return {
+        r: sim.simulate(Scenario(r, inclination_deg=90.0, yaw_deg=20.0, seconds=SECONDS))
+        for r in ("magneto", "hexa", "nona")
+    }
 
 
 def _leg_grouped(arrays, frames, variant="next"):
@@ -39,10 +41,15 @@ def test_simulated_views_commute_with_every_group_element(rollouts, robot):
         base = _leg_grouped(raw, frames, variant)
         for g in spec.group:
             moved = _leg_grouped(act_on_raw(g, raw, frames), frames, variant)
-            np.testing.assert_allclose(moved.inputs["x"],
-                                       spec.group.act(g, base.inputs["x"], layout.reflection_signs),
-                                       atol=1e-10, rtol=0)
-            np.testing.assert_allclose(moved.target, spec.group.act(g, base.target), atol=1e-10, rtol=0)
+            np.testing.assert_allclose(
+                moved.inputs["x"],
+                spec.group.act(g, base.inputs["x"], layout.reflection_signs),
+                atol=1e-10,
+                rtol=0,
+            )
+            np.testing.assert_allclose(
+                moved.target, spec.group.act(g, base.target), atol=1e-10, rtol=0
+            )
 
 
 def test_simulated_leg_grouped_is_invariant_to_turning_the_scene_about_gravity(rollouts):
@@ -56,14 +63,17 @@ def test_simulated_leg_grouped_is_invariant_to_turning_the_scene_about_gravity(r
 def test_a_scene_simulated_at_another_heading_gives_the_same_leg_grouped_data(rollouts):
     """The simulator itself is gravity-axis symmetric: a real rotated run, not a transform."""
     frames = LegFrames.from_spec(load_robot("hexa"))
-    turned = sim.simulate(Scenario("hexa", inclination_deg=90.0, heading_deg=33.0, yaw_deg=20.0,
-                                   seconds=SECONDS))
+    turned = sim.simulate(
+        Scenario("hexa", inclination_deg=90.0, heading_deg=33.0, yaw_deg=20.0, seconds=SECONDS)
+    )
     a, b = _leg_grouped(rollouts["hexa"].arrays, frames), _leg_grouped(turned.arrays, frames)
     assert a.inputs["x"].shape == b.inputs["x"].shape
     # measured ~1e-10 over a second (accelerations); the view itself adds nothing
     np.testing.assert_allclose(b.inputs["x"], a.inputs["x"], atol=1e-8, rtol=0)
     np.testing.assert_allclose(b.target, a.target, atol=1e-8, rtol=0)
-    vec_a = build_view(rollouts["hexa"].arrays, np.zeros(len(a.target) + 1, int), frames, "vector", "acc")
+    vec_a = build_view(
+        rollouts["hexa"].arrays, np.zeros(len(a.target) + 1, int), frames, "vector", "acc"
+    )
     vec_b = build_view(turned.arrays, np.zeros(len(b.target) + 1, int), frames, "vector", "acc")
     assert np.abs(vec_a.inputs["x"] - vec_b.inputs["x"]).max() > 1e-2  # the world frame moved
 
@@ -97,12 +107,18 @@ def test_recorded_contact_and_magnet_flags_match_the_physics(robot, inclination)
         step = int(round(d.time / m.opt.timestep))  # the state the next row records
         surface = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_GEOM, SURFACE)
         normal, origin = d.geom_xmat[surface].reshape(3, 3)[:, 2], d.geom_xpos[surface]
-        soles = [mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_GEOM, sole_name(i)) for i in range(spec.n_legs)]
+        soles = [
+            mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_GEOM, sole_name(i)) for i in range(spec.n_legs)
+        ]
         gap = (d.geom_xpos[soles] - origin) @ normal - [_reach(m, d, g, normal) for g in soles]
-        magnets = [mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_ACTUATOR, magnet_name(i))
-                   for i in range(spec.n_legs)]
+        magnets = [
+            mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_ACTUATOR, magnet_name(i))
+            for i in range(spec.n_legs)
+        ]
         base = d.xmat[mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_BODY, "base")].reshape(3, 3)
-        soles_in_base = (d.geom_xpos[soles] - d.xpos[mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_BODY, "base")]) @ base
+        soles_in_base = (
+            d.geom_xpos[soles] - d.xpos[mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_BODY, "base")]
+        ) @ base
         seen[step] = (gap, d.ctrl[magnets].copy(), soles_in_base)
 
     rollout = sim.run_climb(Climb.from_scenario(scenario), scenario.seconds, 0.006, on_step)
@@ -155,11 +171,24 @@ def test_ctrl_c_during_generation_keeps_finished_work_and_resumes(tmp_path):
     from symbench.core.data.presets import dataset_id
 
     env = dict(os.environ, MUJOCO_GL="disable", SYMBENCH_HOME=str(tmp_path))
-    command = [str(Path(sys.executable).with_name("symbench")), "data", "generate", "--robot",
-               "magneto", "--preset", "small", "--no-progress"]
-    proc = subprocess.Popen(command, env=env, start_new_session=True, stdout=subprocess.PIPE,
-                            stderr=subprocess.STDOUT,
-                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    command = [
+        str(Path(sys.executable).with_name("symbench")),
+        "data",
+        "generate",
+        "--robot",
+        "magneto",
+        "--preset",
+        "small",
+        "--no-progress",
+    ]
+    proc = subprocess.Popen(
+        command,
+        env=env,
+        start_new_session=True,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL),
+    )
     folder = tmp_path / "datasets" / dataset_id("magneto", "small") / "records"
     while not folder.is_dir() or len(list(folder.glob("*.json"))) < 3:
         time.sleep(0.2)

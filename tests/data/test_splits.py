@@ -8,21 +8,34 @@ from conftest import short_grid
 from synthetic_raw import fake_simulate
 
 from symbench import hookimpl
-from symbench.core import registry
+from symbench.core.common.errors import SymbenchError
 from symbench.core.data import load_dataset
 from symbench.core.data.generation import generate
-from symbench.core.entries import SplitEntry
-from symbench.core.errors import SymbenchError
-from symbench.core.plugins import PluginHost, set_host
+from symbench.core.plugin import registry
+from symbench.core.plugin.entries import SplitEntry
+from symbench.core.plugin.host import PluginHost, set_host
 
-STANDARD = ("iid", "unseen-heading", "unseen-rotation",
-            "fraction-0.1", "fraction-0.25", "fraction-0.5", "fraction-0.75")
+STANDARD = (
+    "iid",
+    "unseen-heading",
+    "unseen-rotation",
+    "fraction-0.1",
+    "fraction-0.25",
+    "fraction-0.5",
+    "fraction-0.75",
+)
 
 
 @pytest.fixture
 def hexa_small(home):
-    generate("hexa", "small", simulator=fake_simulate, show_progress=False,
-             scenarios=short_grid("hexa"), id_override="hexa-short")
+    generate(
+        "hexa",
+        "small",
+        simulator=fake_simulate,
+        show_progress=False,
+        scenarios=short_grid("hexa"),
+        id_override="hexa-short",
+    )
     return load_dataset("hexa-short")
 
 
@@ -96,8 +109,14 @@ def test_a_split_plugin_is_used_and_its_mistakes_are_named(hexa_small):
         @hookimpl
         def symbench_splits(self):
             return [
-                SplitEntry("first-half", lambda ctx: np.where(
-                    ctx.trajectory_ids < 20, "train", np.where(ctx.trajectory_ids < 30, "val", "test"))),
+                SplitEntry(
+                    "first-half",
+                    lambda ctx: np.where(
+                        ctx.trajectory_ids < 20,
+                        "train",
+                        np.where(ctx.trajectory_ids < 30, "val", "test"),
+                    ),
+                ),
                 SplitEntry("bad-label", lambda ctx: ["training"] * len(ctx.trajectory_ids)),
                 SplitEntry("no-test", lambda ctx: ["train"] * len(ctx.trajectory_ids)),
             ]

@@ -6,13 +6,13 @@ import numpy as np
 import pytest
 from synthetic_raw import synthetic_raw
 
-from symbench.core import schema
+from symbench.core.common.errors import SymbenchError
+from symbench.core.data import schema
 from symbench.core.data.frames import LegFrames
 from symbench.core.data.raw_action import act_on_raw, base_map, rotate_scene_about_gravity
 from symbench.core.data.views import build_view, sample_rows
-from symbench.core.errors import SymbenchError
-from symbench.core.groups import GroupElement, act
-from symbench.core.robots import load_robot
+from symbench.core.robot.specs import load_robot
+from symbench.core.symmetry.groups import GroupElement, act
 
 ROBOTS = ("magneto", "hexa", "nona")
 VARIANTS = ("acc", "next")
@@ -62,8 +62,9 @@ def test_reflections_act_on_raw_like_on_views(robot):
         tried += 1
         base = build_view(raw, traj, frames, "leg_grouped", "next")
         moved = build_view(act_on_raw(g, raw, frames), traj, frames, "leg_grouped", "next")
-        np.testing.assert_allclose(moved.inputs["x"], act(g, base.inputs["x"], layout.reflection_signs),
-                                   atol=1e-10, rtol=0)
+        np.testing.assert_allclose(
+            moved.inputs["x"], act(g, base.inputs["x"], layout.reflection_signs), atol=1e-10, rtol=0
+        )
     assert tried > 0, f"no mirror fits {robot}'s leg frames"
 
 

@@ -8,15 +8,15 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from model_sizes import SMALL
 from safetensors import safe_open
 from safetensors.numpy import save_file
 
-from symbench.core import registry
-from symbench.core.checkpoints import CheckpointError, checkpoint_sha256
-from symbench.core.resume import BEST_DIR, PREVIOUS, RESUME, CheckpointWarning
-from symbench.core.trained_model import TENSORS, TrainedModel
-from symbench.core.training import TrainConfig, train
-from model_sizes import SMALL
+from symbench.core.plugin import registry
+from symbench.core.training.checkpoints import CheckpointError, checkpoint_sha256
+from symbench.core.training.loop import TrainConfig, train
+from symbench.core.training.resume import BEST_DIR, PREVIOUS, RESUME, CheckpointWarning
+from symbench.core.training.trained_model import TENSORS, TrainedModel
 
 WHOLE, FIRST = (TrainConfig(max_epochs=n, hyper=SMALL["sdnn"], progress=False) for n in (4, 2))
 DAMAGED = "damaged (its content does not match its SHA-256)"
@@ -97,8 +97,10 @@ def test_checkpoint_without_hash_is_refused(tmp_path):
     save_file({"params/w": np.zeros(3, np.float32)}, path, {"symbench": "{}"})
     with pytest.raises(CheckpointError) as error:
         checkpoint_sha256(path)
-    assert str(error.value) == (f"checkpoint {path} carries no content hash (damaged, or "
-                                "written before checkpoints were hashed)")
+    assert str(error.value) == (
+        f"checkpoint {path} carries no content hash (damaged, or "
+        "written before checkpoints were hashed)"
+    )
 
 
 @pytest.mark.parametrize("damage", [flip, truncate])
@@ -109,8 +111,11 @@ def test_resumed_run_recovers_from_a_damaged_checkpoint(data, whole, target, dam
     path = tmp_path / (RESUME if target == "resume" else f"{BEST_DIR}/{TENSORS}")
     reason = damage(path)
     model, warned = resumed(data, tmp_path)
-    then = (f"deleted it, falling back to {tmp_path / PREVIOUS}" if target == "resume"
-            else "rewriting it from the resume checkpoint")
+    then = (
+        f"deleted it, falling back to {tmp_path / PREVIOUS}"
+        if target == "resume"
+        else "rewriting it from the resume checkpoint"
+    )
     assert warned == [f"checkpoint {path} is {reason}; {then}"]
     assert_same_model(model, whole)
     assert checkpoint_sha256(tmp_path / BEST_DIR / TENSORS) == whole.sha256()
@@ -123,6 +128,7 @@ def test_run_retrains_from_scratch_when_no_resume_checkpoint_is_good(data, whole
     assert warned == [
         f"checkpoint {tmp_path / RESUME} is {reasons[0]}; deleted it, falling back to "
         f"{tmp_path / PREVIOUS}",
-        f"checkpoint {tmp_path / PREVIOUS} is {reasons[1]}; deleted it, training from scratch"]
+        f"checkpoint {tmp_path / PREVIOUS} is {reasons[1]}; deleted it, training from scratch",
+    ]
     assert_same_model(model, whole)
     assert checkpoint_sha256(tmp_path / BEST_DIR / TENSORS) == whole.sha256()

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from symbench.core import schema
-from symbench.core.normalization import Normalizer
+from symbench.core.data import schema
+from symbench.core.training.normalization import Normalizer
 from symbench.testing.synthetic import synthetic_views
 
 

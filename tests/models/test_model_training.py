@@ -4,12 +4,12 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-
-from symbench.core import registry
-from symbench.core.errors import SymbenchError
-from symbench.core.trained_model import TrainedModel
-from symbench.core.training import TrainConfig, batch_order, train
 from model_sizes import BACKENDS, MODELS, SMALL
+
+from symbench.core.common.errors import SymbenchError
+from symbench.core.plugin import registry
+from symbench.core.training.loop import TrainConfig, batch_order, train
+from symbench.core.training.trained_model import TrainedModel
 
 
 @pytest.mark.parametrize("backend", BACKENDS)
@@ -17,8 +17,12 @@ from model_sizes import BACKENDS, MODELS, SMALL
 def test_validation_loss_falls(name, backend, smoke):
     entry = registry.model(name, backend)
     tr, va = smoke
-    model = train(entry, tr[entry.view], va[entry.view],
-                  TrainConfig(max_epochs=6, hyper=SMALL[name], progress=False))
+    model = train(
+        entry,
+        tr[entry.view],
+        va[entry.view],
+        TrainConfig(max_epochs=6, hyper=SMALL[name], progress=False),
+    )
     val = model.history["val_loss"]
     assert len(val) == 6 and min(val[1:]) < 0.8 * val[0], val
     assert model.best_epoch == int(np.argmin(val))
@@ -36,7 +40,9 @@ def test_interrupted_training_resumes_exactly(backend, smoke, tmp_path):
     tr, va = (s["leg_grouped"].take(np.arange(256)) for s in smoke)
     config = TrainConfig(max_epochs=4, hyper=SMALL["sdnn"], progress=False)
     whole = train(entry, tr, va, config)
-    first = train(entry, tr, va, TrainConfig(max_epochs=2, hyper=SMALL["sdnn"], progress=False), tmp_path)
+    first = train(
+        entry, tr, va, TrainConfig(max_epochs=2, hyper=SMALL["sdnn"], progress=False), tmp_path
+    )
     assert len(first.history["val_loss"]) == 2
     resumed = train(entry, tr, va, config, tmp_path)
     # torch repeats itself bit for bit; XLA's CPU kernels may round the last bit differently
@@ -53,7 +59,13 @@ def test_resume_refuses_a_checkpoint_of_another_configuration(smoke, tmp_path):
     tr, va = (s["leg_grouped"].take(np.arange(128)) for s in smoke)
     train(entry, tr, va, TrainConfig(max_epochs=1, hyper=SMALL["sdnn"], progress=False), tmp_path)
     with pytest.raises(SymbenchError, match="another model, data or configuration"):
-        train(entry, tr, va, TrainConfig(max_epochs=1, seed=1, hyper=SMALL["sdnn"], progress=False), tmp_path)
+        train(
+            entry,
+            tr,
+            va,
+            TrainConfig(max_epochs=1, seed=1, hyper=SMALL["sdnn"], progress=False),
+            tmp_path,
+        )
 
 
 def test_resume_refuses_a_checkpoint_of_other_data_of_the_same_size(smoke, tmp_path):
@@ -71,8 +83,18 @@ def test_stopping_rule(ratio, patience, epochs, smoke):
     """ratio x val > train every epoch: stop after `patience` epochs; never: run to the cap."""
     entry = registry.model("sdnn", "torch")
     tr, va = (s["leg_grouped"].take(np.arange(128)) for s in smoke)
-    model = train(entry, tr, va, TrainConfig(max_epochs=5, stop_ratio=ratio, stop_patience=patience,
-                                             hyper=SMALL["sdnn"], progress=False))
+    model = train(
+        entry,
+        tr,
+        va,
+        TrainConfig(
+            max_epochs=5,
+            stop_ratio=ratio,
+            stop_patience=patience,
+            hyper=SMALL["sdnn"],
+            progress=False,
+        ),
+    )
     assert len(model.history["val_loss"]) == epochs
 
 
@@ -85,14 +107,22 @@ def test_batch_order_is_a_seeded_permutation_per_epoch():
 def test_best_checkpoint_round_trips_without_pickle(smoke, tmp_path):
     entry = registry.model("sdgnn", "torch")
     tr, va = smoke
-    model = train(entry, tr["leg_grouped"], va["leg_grouped"],
-                  TrainConfig(max_epochs=2, hyper=SMALL["sdgnn"], progress=False), tmp_path)
+    model = train(
+        entry,
+        tr["leg_grouped"],
+        va["leg_grouped"],
+        TrainConfig(max_epochs=2, hyper=SMALL["sdgnn"], progress=False),
+        tmp_path,
+    )
     loaded = TrainedModel.load(tmp_path / "best")
     assert loaded.n_params == model.n_params and loaded.history == model.history
-    np.testing.assert_array_equal(loaded.predict(va["leg_grouped"].inputs),
-                                  model.predict(va["leg_grouped"].inputs))
+    np.testing.assert_array_equal(
+        loaded.predict(va["leg_grouped"].inputs), model.predict(va["leg_grouped"].inputs)
+    )
     raw = (tmp_path / "best" / "model.safetensors").read_bytes()
-    assert b"normalization/x/mean" in raw[:4096] and not raw.startswith(b"\x80")  # no pickle protocol
+    assert b"normalization/x/mean" in raw[:4096] and not raw.startswith(
+        b"\x80"
+    )  # no pickle protocol
 
 
 def test_corrupt_or_foreign_checkpoints_are_named(tmp_path):

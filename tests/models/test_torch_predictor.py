@@ -5,10 +5,10 @@ from __future__ import annotations
 import numpy as np
 import torch
 
-from symbench.core.backends import get_backend
-from symbench.core.entries import ModelEntry
-from symbench.core.model_dims import dims_of
-from symbench.core.normalization import Normalizer
+from symbench.core.data.model_dims import dims_of
+from symbench.core.plugin.entries import ModelEntry
+from symbench.core.training.backends import get_backend
+from symbench.core.training.normalization import Normalizer
 
 
 class SignBranching(torch.nn.Module):
@@ -27,13 +27,17 @@ class SignBranching(torch.nn.Module):
 def test_predictor_matches_eager_on_data_dependent_branches(smoke):
     data = smoke[0]["leg_grouped"]
     dims = dims_of(data)
-    entry = ModelEntry("branching", "torch", "leg_grouped", "acc", False,
-                       lambda d: SignBranching(d.n_legs))
+    entry = ModelEntry(
+        "branching", "torch", "leg_grouped", "acc", False, lambda d: SignBranching(d.n_legs)
+    )
     backend = get_backend("torch")
     normalizer = Normalizer.fit(data)
     predict = backend.make_predictor(entry, dims, {}, {"scale": np.ones(())}, normalizer)
     for sign in (1.0, -1.0):
-        x = {"x": normalizer.stats["x"][0] + sign * normalizer.stats["x"][1] * np.ones((2, *dims.shape("x")))}
+        x = {
+            "x": normalizer.stats["x"][0]
+            + sign * normalizer.stats["x"][1] * np.ones((2, *dims.shape("x")))
+        }
         z = torch.from_numpy(normalizer.normalize("x", x["x"]).astype(np.float32))
         with torch.no_grad():
             eager = SignBranching(dims.n_legs)(z).numpy()
@@ -42,8 +46,8 @@ def test_predictor_matches_eager_on_data_dependent_branches(smoke):
 
 
 def test_traced_predictor_equals_eager_bitwise_at_any_batch_size(smoke):
-    from symbench.core import registry
-    from symbench.core.backends.torch_backend import Normalized, build_network
+    from symbench.core.plugin import registry
+    from symbench.core.training.backends.torch_backend import Normalized, build_network
 
     data = smoke[0]["leg_grouped"]
     dims = dims_of(data)
@@ -52,7 +56,9 @@ def test_traced_predictor_equals_eager_bitwise_at_any_batch_size(smoke):
     params = backend.init_params(entry, dims, {"latent": 16}, 0)
     normalizer = Normalizer.fit(data)
     predict = backend.make_predictor(entry, dims, {"latent": 16}, params, normalizer)
-    eager = Normalized(build_network(entry, dims, {"latent": 16}, params), normalizer, dims.keys).float()
+    eager = Normalized(
+        build_network(entry, dims, {"latent": 16}, params), normalizer, dims.keys
+    ).float()
     for n in (1, 7):
         x = data.inputs["x"][:n].astype(np.float32)
         with torch.no_grad():

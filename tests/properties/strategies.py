@@ -12,20 +12,30 @@ import numpy as np
 from hypothesis import strategies as st
 
 FLOATS = st.floats() | st.sampled_from([1e300, -1e300, 3.5e38, 1e-320, 0.0])
-SCALARS = st.none() | st.booleans() | st.integers(-2**70, 2**70) | FLOATS | st.text(max_size=12)
-JSON = st.recursive(SCALARS, lambda inner: st.lists(inner, max_size=4)
-                    | st.dictionaries(st.text(max_size=10), inner, max_size=4), max_leaves=10)
+SCALARS = st.none() | st.booleans() | st.integers(-(2**70), 2**70) | FLOATS | st.text(max_size=12)
+JSON = st.recursive(
+    SCALARS,
+    lambda inner: (
+        st.lists(inner, max_size=4) | st.dictionaries(st.text(max_size=10), inner, max_size=4)
+    ),
+    max_leaves=10,
+)
 # text no JSON reader should trace back on: nesting past the recursion limit, a number past
 # Python's 4300-digit conversion limit, NaN and Infinity (json.dumps writes them)
-NASTY_TEXT = (st.integers(1_000, 100_000).map(lambda n: "[" * n + "]" * n)
-              | st.integers(4_301, 6_000).map(lambda n: "9" * n)
-              | JSON.map(json.dumps) | st.text())
+NASTY_TEXT = (
+    st.integers(1_000, 100_000).map(lambda n: "[" * n + "]" * n)
+    | st.integers(4_301, 6_000).map(lambda n: "9" * n)
+    | JSON.map(json.dumps)
+    | st.text()
+)
 FILE_BYTES = st.binary(max_size=300) | NASTY_TEXT.map(str.encode)
 
 
 def _slots(doc: Any) -> Iterator[tuple[Any, Any]]:
     """(container, key) of every value inside `doc`."""
-    items = doc.items() if isinstance(doc, dict) else enumerate(doc) if isinstance(doc, list) else ()
+    items = (
+        doc.items() if isinstance(doc, dict) else enumerate(doc) if isinstance(doc, list) else ()
+    )
     for key, value in items:
         yield doc, key
         yield from _slots(value)
@@ -63,8 +73,9 @@ def edited(draw: st.DrawFn, document: Any) -> Any:
 
 
 @st.composite
-def defective(draw: st.DrawFn, columns: dict[str, np.ndarray],
-              same_length: bool) -> dict[str, np.ndarray]:
+def defective(
+    draw: st.DrawFn, columns: dict[str, np.ndarray], same_length: bool
+) -> dict[str, np.ndarray]:
     """`columns` (a trajectory's arrays) unchanged or with one defect: a value set to any
     float, a column dropped, shortened, made text, pickled or added, or fewer steps;
     `same_length` is for Parquet tables, whose columns can be neither ragged nor pickled."""
@@ -87,7 +98,7 @@ def defective(draw: st.DrawFn, columns: dict[str, np.ndarray],
         n = draw(st.integers(0, 3))
         out = {k: v[:n] for k, v in out.items()}
     elif kind == "shorten":
-        out[name] = out[name][:-draw(st.integers(1, 3))]
+        out[name] = out[name][: -draw(st.integers(1, 3))]
     elif kind == "pickled":  # np.savez pickles object arrays
         out[name] = out[name].astype(object)
     return out

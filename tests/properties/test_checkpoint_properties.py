@@ -9,13 +9,13 @@ from hypothesis import given
 from hypothesis import strategies as st
 from strategies import JSON, edited
 
-from symbench.core import registry
-from symbench.core.backends import get_backend
-from symbench.core.checkpoints import read_tensors, write_tensors
-from symbench.core.errors import SymbenchError
-from symbench.core.model_dims import dims_for
-from symbench.core.normalization import Normalizer
-from symbench.core.trained_model import TENSORS, TrainedModel
+from symbench.core.common.errors import SymbenchError
+from symbench.core.data.model_dims import dims_for
+from symbench.core.plugin import registry
+from symbench.core.training.backends import get_backend
+from symbench.core.training.checkpoints import read_tensors, write_tensors
+from symbench.core.training.normalization import Normalizer
+from symbench.core.training.trained_model import TENSORS, TrainedModel
 
 
 @pytest.fixture(scope="module")
@@ -25,8 +25,17 @@ def saved(tmp_path_factory):
     dims = dims_for("leg_grouped", "acc", 4)
     hyper = {"latent": 8}
     params = get_backend("torch").init_params(entry, dims, hyper, seed=0)
-    model = TrainedModel(entry, dims, hyper, Normalizer.random(dims, np.random.default_rng(0)),
-                         params, {"train_loss": [1.0], "val_loss": [0.5]}, 0, {"seed": 0}, "done")
+    model = TrainedModel(
+        entry,
+        dims,
+        hyper,
+        Normalizer.random(dims, np.random.default_rng(0)),
+        params,
+        {"train_loss": [1.0], "val_loss": [0.5]},
+        0,
+        {"seed": 0},
+        "done",
+    )
     folder = tmp_path_factory.mktemp("model")
     model.save(folder)
     return folder / TENSORS, model
@@ -80,9 +89,12 @@ def test_a_damaged_checkpoint_is_refused_or_loads_as_saved(tmp_path_factory, sav
 @given(data=st.data())
 def test_a_crafted_checkpoint_is_refused_or_loads_as_what_it_says(tmp_path_factory, saved, data):
     arrays, description = read_tensors(saved[0])
-    crafted = data.draw(edited({"arrays": {k: v.shape for k, v in arrays.items()},
-                                "description": description}).filter(lambda d: isinstance(d, dict))
-                        | JSON.map(lambda d: {"description": d}))
+    crafted = data.draw(
+        edited(
+            {"arrays": {k: v.shape for k, v in arrays.items()}, "description": description}
+        ).filter(lambda d: isinstance(d, dict))
+        | JSON.map(lambda d: {"description": d})
+    )
     shapes = crafted.get("arrays", {}) if isinstance(crafted.get("arrays"), dict) else {}
     tensors = {k: np.zeros(s) for k, s in shapes.items() if _is_shape(s)}
     folder = tmp_path_factory.mktemp("crafted")
@@ -95,5 +107,8 @@ def test_a_crafted_checkpoint_is_refused_or_loads_as_what_it_says(tmp_path_facto
 
 
 def _is_shape(value) -> bool:
-    return (isinstance(value, (list, tuple)) and len(value) <= 3
-            and all(isinstance(n, int) and not isinstance(n, bool) and 0 <= n <= 64 for n in value))
+    return (
+        isinstance(value, (list, tuple))
+        and len(value) <= 3
+        and all(isinstance(n, int) and not isinstance(n, bool) and 0 <= n <= 64 for n in value)
+    )

@@ -13,24 +13,33 @@ from cli_invoke import error_line, invoke
 from hypothesis import given
 from hypothesis import strategies as st
 
-from symbench.core.errors import SymbenchError
-from symbench.core.seeds import SEED_MAX
+from symbench.core.common.errors import SymbenchError
+from symbench.core.common.seeds import SEED_MAX
 
-NUMBERS = (st.integers(-2**70, 2**70).map(str) | st.floats().map(repr)
-           | st.sampled_from(["nan", "inf", "-inf", "1e309", "0x10", " 3 ", "", "1_0"])
-           | st.text(max_size=6))
+NUMBERS = (
+    st.integers(-(2**70), 2**70).map(str)
+    | st.floats().map(repr)
+    | st.sampled_from(["nan", "inf", "-inf", "1e309", "0x10", " 3 ", "", "1_0"])
+    | st.text(max_size=6)
+)
 LISTS = st.lists(NUMBERS | st.sampled_from(["sdnn", "ffnn", "hexa"]), max_size=4).map(",".join)
 # relative paths inside a scratch folder, some through a file named `blocker`
-PATHS = st.lists(st.sampled_from(["blocker", "out", "a b", "ü", ".", "x\x00y"]), min_size=1,
-                 max_size=3).map(lambda parts: str(Path(*parts)))
+PATHS = st.lists(
+    st.sampled_from(["blocker", "out", "a b", "ü", ".", "x\x00y"]), min_size=1, max_size=3
+).map(lambda parts: str(Path(*parts)))
 
 
 def one_of_them_anything(valid: dict[str, st.SearchStrategy]) -> st.SearchStrategy:
     """Option values: valid ones, with one option (or none) given any text instead."""
     anything = {name: NUMBERS | (LISTS if name.endswith("s") else PATHS) for name in valid}
     return st.sampled_from([None, *valid]).flatmap(
-        lambda chosen: st.fixed_dictionaries({name: anything[name] if name == chosen else strategy
-                                              for name, strategy in valid.items()}))
+        lambda chosen: st.fixed_dictionaries(
+            {
+                name: anything[name] if name == chosen else strategy
+                for name, strategy in valid.items()
+            }
+        )
+    )
 
 
 class Reached(SymbenchError):
@@ -54,18 +63,31 @@ def refused_or_reached(result, options: tuple[str, ...]) -> bool:
 
 
 COUNTS = st.integers(0, 2**33).map(str)
-RUN = {"--seed": COUNTS, "--max-epochs": COUNTS, "--workers": COUNTS,
-       "--evaluators": st.sampled_from(["torque-error", "torque-error,equivariance"]),
-       "--output": PATHS}
+RUN = {
+    "--seed": COUNTS,
+    "--max-epochs": COUNTS,
+    "--workers": COUNTS,
+    "--evaluators": st.sampled_from(["torque-error", "torque-error,equivariance"]),
+    "--output": PATHS,
+}
 
 
 @given(values=one_of_them_anything(RUN))
 def test_run_values_are_refused_or_handed_on_in_range(values):
-    with tempfile.TemporaryDirectory() as scratch, contextlib.chdir(scratch), \
-            stand_in("symbench.core.run_command:run_spec") as run:
+    with (
+        tempfile.TemporaryDirectory() as scratch,
+        contextlib.chdir(scratch),
+        stand_in("symbench.core.runs.run_cli:run_spec") as run,
+    ):
         Path("blocker").write_text("a file, not a folder")
-        result = invoke("run", "--model", "sdnn", "--robot", "hexa",
-                        *(f"{option}={value}" for option, value in values.items()))
+        result = invoke(
+            "run",
+            "--model",
+            "sdnn",
+            "--robot",
+            "hexa",
+            *(f"{option}={value}" for option, value in values.items()),
+        )
         if not refused_or_reached(result, tuple(values)):
             return
         spec = run.call_args.args[0]
@@ -79,8 +101,11 @@ def test_run_values_are_refused_or_handed_on_in_range(values):
 
 @given(models=LISTS, seeds=LISTS)
 def test_sweep_lists_are_refused_or_handed_on_parsed(models, seeds):
-    with tempfile.TemporaryDirectory() as scratch, contextlib.chdir(scratch), \
-            stand_in("symbench.core.sweep:plan") as plan:
+    with (
+        tempfile.TemporaryDirectory() as scratch,
+        contextlib.chdir(scratch),
+        stand_in("symbench.core.runs.sweep:plan") as plan,
+    ):
         result = invoke("sweep", f"--models={models}", "--robots=hexa", f"--seeds={seeds}")
         if refused_or_reached(result, ("--models", "--seeds")):
             parsed_models, _, _, parsed_seeds, *_ = plan.call_args.args
@@ -90,14 +115,23 @@ def test_sweep_lists_are_refused_or_handed_on_parsed(models, seeds):
 
 
 REALS = st.floats(-1e3, 1e3).map(repr)
-SIM_CHECK = {"--inclination": REALS, "--heading": REALS, "--seconds": REALS, "--control-period": REALS}
+SIM_CHECK = {
+    "--inclination": REALS,
+    "--heading": REALS,
+    "--seconds": REALS,
+    "--control-period": REALS,
+}
 
 
 @given(values=one_of_them_anything(SIM_CHECK))
 def test_sim_check_numbers_are_refused_or_finite_and_in_range(values):
     with stand_in("symbench.core.sim.check:check") as check:
-        result = invoke("sim", "check", "--robot=hexa",
-                        *(f"{option}={value}" for option, value in values.items()))
+        result = invoke(
+            "sim",
+            "check",
+            "--robot=hexa",
+            *(f"{option}={value}" for option, value in values.items()),
+        )
         if refused_or_reached(result, tuple(values)):
             scenario, control_period = check.call_args.args
             assert 0 <= scenario.inclination_deg <= 180 and math.isfinite(scenario.heading_deg)

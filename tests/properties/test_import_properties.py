@@ -15,17 +15,21 @@ from sandbox import files_under, fresh_home
 from strategies import FILE_BYTES, NASTY_TEXT, defective, edited
 from synthetic_raw import N_LEGS, synthetic_raw, write_logs
 
+from symbench.core.common.errors import SymbenchError
 from symbench.core.data.columns import flatten, unflatten
 from symbench.core.data.importer import import_logs
 from symbench.core.data.storage import read_trajectory
-from symbench.core.errors import SymbenchError
-from symbench.core.raw import COLUMN_NAMES
+from symbench.core.sim.raw import COLUMN_NAMES
 
 LEGS = N_LEGS["hexa"]
-SCENARIOS = [{"heading_deg": 0.0, "yaw_deg": 60.0 * i, "leg_order": [0, 1, 2, 3, 4, 5]}
-             for i in range(3)]
-MANIFEST = {"robot": "hexa", "record_period_s": 0.006,
-            "trajectories": [{"file": f"run{i}.npz", "scenario": s} for i, s in enumerate(SCENARIOS)]}
+SCENARIOS = [
+    {"heading_deg": 0.0, "yaw_deg": 60.0 * i, "leg_order": [0, 1, 2, 3, 4, 5]} for i in range(3)
+]
+MANIFEST = {
+    "robot": "hexa",
+    "record_period_s": 0.006,
+    "trajectories": [{"file": f"run{i}.npz", "scenario": s} for i, s in enumerate(SCENARIOS)],
+}
 
 
 @pytest.fixture(scope="module")
@@ -56,7 +60,8 @@ def test_any_import_json_gives_an_error_or_exactly_what_it_lists(logs, manifest)
             assert_refused(error, home, str(logs), "robot")
             return
         listed = json.loads(manifest).get("trajectories") or [
-            {"file": p.name} for p in sorted(logs.glob("*.npz"))]
+            {"file": p.name} for p in sorted(logs.glob("*.npz"))
+        ]
         stored = dataset.metadata["trajectories"]
         assert [r["source_file"] for r in stored] == [e["file"] for e in listed]
         for record, entry in zip(stored, listed):
@@ -77,7 +82,9 @@ def test_any_log_file_gives_an_error_naming_it_or_its_exact_values(tmp_path_fact
     else:
         written = data.draw(defective(flatten(raw, LEGS), same_length=True))
         pq.write_table(pa.table(written), path)
-    (folder / "import.json").write_text(json.dumps({**MANIFEST, "trajectories": [{"file": path.name}]}))
+    (folder / "import.json").write_text(
+        json.dumps({**MANIFEST, "trajectories": [{"file": path.name}]})
+    )
     with fresh_home() as home:
         try:
             dataset = import_logs(folder, "log")
@@ -86,7 +93,9 @@ def test_any_log_file_gives_an_error_naming_it_or_its_exact_values(tmp_path_fact
             return
         assert all(np.asarray(v).dtype != object for v in written.values())  # no pickle is loaded
         stored = read_trajectory(dataset.root / dataset.metadata["trajectories"][0]["file"], LEGS)
-        assert_same_columns(stored, written if fmt == "npz" else unflatten(written, LEGS, "written"))
+        assert_same_columns(
+            stored, written if fmt == "npz" else unflatten(written, LEGS, "written")
+        )
 
 
 @given(fmt=st.sampled_from(["npz", "parquet"]), content=FILE_BYTES)
@@ -94,7 +103,9 @@ def test_a_log_file_of_arbitrary_bytes_is_named(tmp_path_factory, fmt, content):
     folder = tmp_path_factory.mktemp("log")
     path = folder / f"run.{fmt}"
     path.write_bytes(content)
-    (folder / "import.json").write_text(json.dumps({**MANIFEST, "trajectories": [{"file": path.name}]}))
+    (folder / "import.json").write_text(
+        json.dumps({**MANIFEST, "trajectories": [{"file": path.name}]})
+    )
     with fresh_home() as home, pytest.raises(SymbenchError) as error:
         import_logs(folder, "log")
     assert_refused(error.value, home, str(path))

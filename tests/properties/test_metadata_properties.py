@@ -15,11 +15,11 @@ from sandbox import fresh_home
 from strategies import FILE_BYTES, edited
 from synthetic_raw import fake_simulate
 
+from symbench.core.common.errors import SymbenchError
 from symbench.core.data import load_dataset
 from symbench.core.data.generation import generate
 from symbench.core.data.metadata import METADATA, content_hash
 from symbench.core.data.storage import step_count
-from symbench.core.errors import SymbenchError
 
 DATASET = "hexa-climb-smoke-v4"
 

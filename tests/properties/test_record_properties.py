@@ -11,8 +11,8 @@ from hypothesis import strategies as st
 from sandbox import files_under
 from strategies import FILE_BYTES, edited
 
-from symbench.core.errors import SymbenchError
-from symbench.core.results import read_record, seal_of, write_record
+from symbench.core.common.errors import SymbenchError
+from symbench.core.runs.results import read_record, seal_of, write_record
 
 # `make_record` and `tmp_path` give a builder and a folder that every example may share
 SHARED_FIXTURES = settings(suppress_health_check=[HealthCheck.function_scoped_fixture])
@@ -35,8 +35,7 @@ def test_any_file_read_as_a_record_gives_an_error_naming_it(tmp_path, content):
 
 @SHARED_FIXTURES
 @given(data=st.data(), reseal=st.booleans())
-def test_an_edited_record_is_refused_or_reads_as_its_content(tmp_path, make_record, data,
-                                                             reseal):
+def test_an_edited_record_is_refused_or_reads_as_its_content(tmp_path, make_record, data, reseal):
     sealed = write_record(make_record(), tmp_path / "valid.json").model_dump(mode="json")
     record = data.draw(edited(sealed))
     if reseal and isinstance(record, dict):
@@ -57,8 +56,9 @@ def test_an_edited_record_is_refused_or_reads_as_its_content(tmp_path, make_reco
 
 @SHARED_FIXTURES
 @given(data=st.data())
-def test_writing_any_record_gives_an_error_and_no_file_or_one_that_reads_back(tmp_path,
-                                                                              make_record, data):
+def test_writing_any_record_gives_an_error_and_no_file_or_one_that_reads_back(
+    tmp_path, make_record, data
+):
     folder = tmp_path / "out"
     record = data.draw(edited(make_record()))
     try:

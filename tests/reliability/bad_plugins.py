@@ -9,9 +9,9 @@ from pathlib import Path
 from typing import Any
 
 from symbench import hookimpl
-from symbench.core.entries import EvaluatorEntry, ModelEntry, RobotEntry
-from symbench.core.model_dims import ModelDims
-from symbench.core.plugins import PluginHost, set_host
+from symbench.core.data.model_dims import ModelDims
+from symbench.core.plugin.entries import EvaluatorEntry, ModelEntry, RobotEntry
+from symbench.core.plugin.host import PluginHost, set_host
 
 # how a network's torques can be misshaped: (N, legs, 1) broadcasts against (N, legs, 3)
 SHAPES = ("squeezed", "flat")
@@ -52,8 +52,9 @@ def build_jax(dims: ModelDims, shape: str) -> Any:
 def misshaped(shape: str, backend: str) -> ModelEntry:
     """A model whose torques are shaped `shape` instead of (N, legs, 3)."""
     build = build_torch if backend == "torch" else build_jax
-    return ModelEntry(f"{shape}-net", backend, "leg_grouped", "acc", False,
-                      lambda dims: build(dims, shape))
+    return ModelEntry(
+        f"{shape}-net", backend, "leg_grouped", "acc", False, lambda dims: build(dims, shape)
+    )
 
 
 class BadPlugin:

@@ -11,14 +11,15 @@ from bad_plugins import SHAPES, misshaped
 from cli_invoke import error_line, invoke
 from synthetic_raw import write_logs
 
-from symbench.core import run_command, runner
+from symbench.core.common.errors import SymbenchError
 from symbench.core.data import load_dataset
 from symbench.core.data.importer import import_logs
 from symbench.core.data.metadata import METADATA, content_hash
-from symbench.core.errors import SymbenchError
-from symbench.core.normalization import Normalizer
-from symbench.core.runner import RunSpec
-from symbench.core.training import TrainConfig, train
+from symbench.core.runs import run_cli as run_command
+from symbench.core.runs import runner
+from symbench.core.runs.runner import RunSpec
+from symbench.core.training.loop import TrainConfig, train
+from symbench.core.training.normalization import Normalizer
 from symbench.testing import synthetic_views
 
 
@@ -39,7 +40,9 @@ def test_values_beyond_float32_are_refused_not_recorded_as_null(home, tmp_path):
         raw = dict(npz)
     raw["tau"] = raw["tau"] * 1e300
     np.savez(folder / "run3.npz", **raw)
-    with pytest.raises(SymbenchError, match=r"run3.npz: column 'tau' holds .*e\+300 at step 0, beyond float32"):
+    with pytest.raises(
+        SymbenchError, match=r"run3.npz: column 'tau' holds .*e\+300 at step 0, beyond float32"
+    ):
         import_logs(folder, "huge")
     train_set = synthetic_views(4, 64)["leg_grouped"]
     huge = dataclasses.replace(train_set, target=train_set.target * 1e300)
@@ -52,9 +55,17 @@ def test_values_beyond_float32_are_refused_not_recorded_as_null(home, tmp_path):
 def test_a_model_whose_torques_are_misshaped_is_named_in_training(backend, shape):
     views, val = synthetic_views(4, 128, seed=0), synthetic_views(4, 64, seed=1)
     entry = misshaped(shape, backend)
-    with pytest.raises(SymbenchError, match=rf"model {shape}-net/{backend} returned torques "
-                                            r"shaped \((\d+, 4, 1|\d+, 12)\), expected \(\d+, 4, 3\)"):
-        train(entry, views["leg_grouped"], val["leg_grouped"], TrainConfig(max_epochs=1, progress=False))
+    with pytest.raises(
+        SymbenchError,
+        match=rf"model {shape}-net/{backend} returned torques "
+        r"shaped \((\d+, 4, 1|\d+, 12)\), expected \(\d+, 4, 3\)",
+    ):
+        train(
+            entry,
+            views["leg_grouped"],
+            val["leg_grouped"],
+            TrainConfig(max_epochs=1, progress=False),
+        )
 
 
 def test_max_epochs_0_is_refused_not_the_presets_cap(monkeypatch, tmp_path):
@@ -63,8 +74,12 @@ def test_max_epochs_0_is_refused_not_the_presets_cap(monkeypatch, tmp_path):
 
     monkeypatch.setattr(run_command, "run_spec", never)
     monkeypatch.setattr(runner, "ensure_dataset", never)
-    message = error_line(invoke("run", "--model", "sdnn", "--robot", "hexa", "--max-epochs", "0",
-                                "--output", tmp_path), 2)
+    message = error_line(
+        invoke(
+            "run", "--model", "sdnn", "--robot", "hexa", "--max-epochs", "0", "--output", tmp_path
+        ),
+        2,
+    )
     assert "Invalid value for '--max-epochs': 0 is not in the range x>=1" in message
     with pytest.raises(SymbenchError, match="TrainConfig.max_epochs must be at least 1, got 0"):
         runner.run(RunSpec(model="sdnn", robot="hexa", max_epochs=0, output=tmp_path))
@@ -79,5 +94,7 @@ def test_rehashed_metadata_whose_step_count_disagrees_with_the_files_is_refused(
     path.write_text(json.dumps(meta))
     file = meta["trajectories"][1]["file"]
     steps = meta["trajectories"][1]["n_steps"]
-    with pytest.raises(SymbenchError, match=rf"{file} holds {steps + 40} steps, metadata.json says {steps}"):
+    with pytest.raises(
+        SymbenchError, match=rf"{file} holds {steps + 40} steps, metadata.json says {steps}"
+    ):
         load_dataset(smoke_hexa.dataset_id)

@@ -5,20 +5,23 @@ from __future__ import annotations
 import pytest
 from synthetic_raw import write_logs
 
+from symbench.core.common.paths import dataset_ids
 from symbench.core.data import importer, load_dataset
 from symbench.core.data.importer import import_logs
-from symbench.core.paths import dataset_ids
 
 
 def failing_metadata(error: BaseException):
     def write_metadata(root, meta):
         raise error
+
     return write_metadata
 
 
 def test_a_failed_import_with_force_leaves_the_existing_dataset_intact(home, tmp_path, monkeypatch):
     before = import_logs(write_logs(tmp_path / "first", n_files=4), "logs").content_hash
-    monkeypatch.setattr(importer, "write_metadata", failing_metadata(OSError(28, "No space left on device")))
+    monkeypatch.setattr(
+        importer, "write_metadata", failing_metadata(OSError(28, "No space left on device"))
+    )
     with pytest.raises(OSError, match="No space left"):
         import_logs(write_logs(tmp_path / "second", n_files=6, n_steps=30), "logs", force=True)
     assert load_dataset("logs").content_hash == before  # every file still verifies

@@ -13,13 +13,14 @@ from cli_invoke import error_line, invoke
 from synthetic_raw import write_logs
 
 from symbench import hookimpl
-from symbench.core import run_command, runner
-from symbench.core.checkpoints import write_tensors
+from symbench.core.common.errors import SymbenchError
 from symbench.core.data.metadata import METADATA, content_hash
-from symbench.core.errors import SymbenchError
-from symbench.core.plugins import PluginHost, set_host
-from symbench.core.results import write_record
-from symbench.core.trained_model import TENSORS, TrainedModel
+from symbench.core.plugin.host import PluginHost, set_host
+from symbench.core.runs import run_cli as run_command
+from symbench.core.runs import runner
+from symbench.core.runs.results import write_record
+from symbench.core.training.checkpoints import write_tensors
+from symbench.core.training.trained_model import TENSORS, TrainedModel
 
 DEEP = "[" * 100_000 + "]" * 100_000
 
@@ -27,6 +28,7 @@ DEEP = "[" * 100_000 + "]" * 100_000
 @pytest.fixture
 def no_run(monkeypatch):
     """`symbench run` fails the test if it gets as far as running."""
+
     def never(*args, **kwargs):
         raise AssertionError("the run started")
 
@@ -34,25 +36,34 @@ def no_run(monkeypatch):
     monkeypatch.setattr(runner, "ensure_dataset", never)
 
 
-@pytest.mark.parametrize("args,option", [
-    (("run", "--model", "sdnn", "--robot", "hexa", "--seed", 2**32), "--seed"),
-    (("sweep", "--models", "sdnn", "--robots", "hexa", "--seeds", f"0,{2**32}"), "--seeds"),
-    (("data", "info", "hexa-climb-smoke-v4", "--seed", 2**32), "--seed"),
-])
+@pytest.mark.parametrize(
+    "args,option",
+    [
+        (("run", "--model", "sdnn", "--robot", "hexa", "--seed", 2**32), "--seed"),
+        (("sweep", "--models", "sdnn", "--robots", "hexa", "--seeds", f"0,{2**32}"), "--seeds"),
+        (("data", "info", "hexa-climb-smoke-v4", "--seed", 2**32), "--seed"),
+    ],
+)
 def test_a_seed_beyond_2_32_is_a_usage_error(no_run, args, option):
-    assert (f"Invalid value for '{option}': {2**32} is not in the range 0<=x<=4294967295"
-            in error_line(invoke(*args), 2))
+    assert (
+        f"Invalid value for '{option}': {2**32} is not in the range 0<=x<=4294967295"
+        in error_line(invoke(*args), 2)
+    )
 
 
 @pytest.mark.parametrize("period", ["nan", "inf"])
 def test_sim_check_refuses_a_control_period_that_is_not_finite(period):
-    message = error_line(invoke("sim", "check", "--robot", "hexa", "--seconds", "0.01",
-                                "--control-period", period), 2)
+    message = error_line(
+        invoke("sim", "check", "--robot", "hexa", "--seconds", "0.01", "--control-period", period),
+        2,
+    )
     assert f"Invalid value for '--control-period': '{period}' is not a finite number" in message
 
 
 @pytest.mark.parametrize("where", ["a file", "a folder under a file"])
-def test_an_output_folder_that_cannot_take_files_is_refused_before_any_work(no_run, tmp_path, where):
+def test_an_output_folder_that_cannot_take_files_is_refused_before_any_work(
+    no_run, tmp_path, where
+):
     blocker = tmp_path / "results.txt"
     blocker.write_text("not a folder")
     output = blocker if where == "a file" else blocker / "results"
@@ -65,7 +76,10 @@ def test_symbench_home_pointing_to_a_file_is_named(tmp_path, monkeypatch):
     home.write_text("not a folder")
     monkeypatch.setenv("SYMBENCH_HOME", str(home))
     message = error_line(invoke("data", "import", write_logs(tmp_path / "logs"), "--id", "logs"), 1)
-    assert f"Error: symbench's home {home} (SYMBENCH_HOME) cannot be a folder: {home} is a file" == message
+    assert (
+        f"Error: symbench's home {home} (SYMBENCH_HOME) cannot be a folder: {home} is a file"
+        == message
+    )
 
 
 def test_leaderboard_out_naming_a_file_is_a_usage_error(tmp_path, make_record):
@@ -87,15 +101,34 @@ def test_metadata_missing_a_key_is_named(smoke_hexa, key):
     assert f"{path} is malformed: {key}: Field required" in message
 
 
-@pytest.mark.parametrize("edit,problem", [
-    (lambda m: m.update(record_period_s=float("inf")), "not valid JSON (Infinity is not a JSON number)"),
-    (lambda m: m.update(trajectories=[{"file": "run0.npz", "scenario": {"heading_deg": float("nan")}}]),
-     "not valid JSON (NaN is not a JSON number)"),
-    (lambda m: m.update(record_period_s="0.006"), "record_period_s: Input should be a valid number"),
-    (lambda m: m.update(trajectories=[{"file": 7}]), "trajectories.0.file: Input should be a valid string"),
-    (lambda m: m.update(trajectories=[{"file": "run0.npz", "scenario": [1]}]),
-     "trajectories.0.scenario: Input should be a valid dictionary"),
-], ids=["Infinity", "NaN", "text for a number", "number for a file", "list for a scenario"])
+@pytest.mark.parametrize(
+    "edit,problem",
+    [
+        (
+            lambda m: m.update(record_period_s=float("inf")),
+            "not valid JSON (Infinity is not a JSON number)",
+        ),
+        (
+            lambda m: m.update(
+                trajectories=[{"file": "run0.npz", "scenario": {"heading_deg": float("nan")}}]
+            ),
+            "not valid JSON (NaN is not a JSON number)",
+        ),
+        (
+            lambda m: m.update(record_period_s="0.006"),
+            "record_period_s: Input should be a valid number",
+        ),
+        (
+            lambda m: m.update(trajectories=[{"file": 7}]),
+            "trajectories.0.file: Input should be a valid string",
+        ),
+        (
+            lambda m: m.update(trajectories=[{"file": "run0.npz", "scenario": [1]}]),
+            "trajectories.0.scenario: Input should be a valid dictionary",
+        ),
+    ],
+    ids=["Infinity", "NaN", "text for a number", "number for a file", "list for a scenario"],
+)
 def test_import_json_with_bad_values_is_named(home, tmp_path, edit, problem):
     folder = write_logs(tmp_path / "logs")
     manifest = json.loads((folder / "import.json").read_text())
@@ -114,7 +147,9 @@ def test_import_json_nested_too_deeply_is_named(home, tmp_path):
 
 
 def test_sweep_seeds_that_are_not_numbers_are_a_usage_error():
-    message = error_line(invoke("sweep", "--models", "sdnn", "--robots", "hexa", "--seeds", "0,one"), 2)
+    message = error_line(
+        invoke("sweep", "--models", "sdnn", "--robots", "hexa", "--seeds", "0,one"), 2
+    )
     assert "Invalid value for '--seeds': 'one' is not a valid integer" in message
 
 
@@ -122,8 +157,9 @@ def test_sweep_seeds_that_are_not_numbers_are_a_usage_error():
 def test_an_unreadable_json_file_among_results_is_named(tmp_path, make_record, content):
     write_record(make_record(), tmp_path / "results" / "r.json")
     (tmp_path / "results" / "s.json").write_text(content)
-    message = error_line(invoke("leaderboard", "--results", tmp_path / "results",
-                                "--out", tmp_path / "board"), 1)
+    message = error_line(
+        invoke("leaderboard", "--results", tmp_path / "results", "--out", tmp_path / "board"), 1
+    )
     assert f"cannot read result record {tmp_path / 'results' / 's.json'}: not valid JSON" in message
 
 
@@ -131,11 +167,16 @@ def test_a_crafted_checkpoint_is_refused_naming_it(tmp_path):
     """Hashed like a real one (anyone can compute a SHA-256), so only its content can tell."""
     path = tmp_path / TENSORS
     write_tensors(path, {"params/w": np.zeros(3)}, {"format": "symbench-model/1"})
-    with pytest.raises(SymbenchError, match=f"{path}: malformed model description: model: Field required"):
+    with pytest.raises(
+        SymbenchError, match=f"{path}: malformed model description: model: Field required"
+    ):
         TrainedModel.load(tmp_path)
     path.write_bytes(len(DEEP).to_bytes(8, "little") + DEEP.encode())  # a header nested deeply
-    with pytest.raises(SymbenchError, match=f"checkpoint {path} is not a readable safetensors "
-                                            r"file \(nested too deeply\)"):
+    with pytest.raises(
+        SymbenchError,
+        match=f"checkpoint {path} is not a readable safetensors "
+        r"file \(nested too deeply\)",
+    ):
         TrainedModel.load(tmp_path)
 
 
@@ -144,25 +185,58 @@ def test_a_plugin_hook_that_returns_no_list_breaks_no_other_command():
         result = invoke("list", "robots", "--json")
     assert result.exit_code == 0, result.output
     assert {r["name"] for r in json.loads(result.stdout)} == {"magneto", "hexa", "nona"}
-    assert ("warning: plugin 'bad' failed in symbench_robots: returned RobotEntry, expected a "
-            "list of RobotEntry") in result.stderr
+    assert (
+        "warning: plugin 'bad' failed in symbench_robots: returned RobotEntry, expected a "
+        "list of RobotEntry"
+    ) in result.stderr
 
 
 @pytest.mark.parametrize("backend", ["torch", "jax"])
 def test_a_model_with_misshaped_torques_is_one_line(smoke_hexa, tmp_path, backend):
     with bad_plugin_installed():
-        message = error_line(invoke("run", "--model", "flat-net", "--backend", backend, "--robot",
-                                    "hexa", "--preset", "smoke", "--evaluators", "torque-error",
-                                    "--output", tmp_path), 1)
+        message = error_line(
+            invoke(
+                "run",
+                "--model",
+                "flat-net",
+                "--backend",
+                backend,
+                "--robot",
+                "hexa",
+                "--preset",
+                "smoke",
+                "--evaluators",
+                "torque-error",
+                "--output",
+                tmp_path,
+            ),
+            1,
+        )
     assert f"model flat-net/{backend} returned torques shaped" in message
 
 
 def test_an_evaluator_that_returns_no_mapping_is_named(smoke_hexa, tmp_path):
     with bad_plugin_installed():
-        message = error_line(invoke("run", "--model", "ffnn", "--robot", "hexa", "--preset",
-                                    "smoke", "--evaluators", "pairs", "--output", tmp_path), 1)
-    assert ("evaluator 'pairs' returned list, expected a mapping of metric names (str) to values"
-            in message)
+        message = error_line(
+            invoke(
+                "run",
+                "--model",
+                "ffnn",
+                "--robot",
+                "hexa",
+                "--preset",
+                "smoke",
+                "--evaluators",
+                "pairs",
+                "--output",
+                tmp_path,
+            ),
+            1,
+        )
+    assert (
+        "evaluator 'pairs' returned list, expected a mapping of metric names (str) to values"
+        in message
+    )
 
 
 class Crashing:
@@ -180,8 +254,9 @@ def test_an_unexpected_error_is_one_line_and_debug_shows_its_traceback():
     set_host(host)
     try:
         message = error_line(invoke("crash"), 1)
-        assert message == ("Error: internal error: RuntimeError: a bug (run with --debug for the "
-                           "traceback)")
+        assert message == (
+            "Error: internal error: RuntimeError: a bug (run with --debug for the traceback)"
+        )
         with pytest.raises(AssertionError, match="RuntimeError: a bug"):
             invoke("--debug", "crash")
     finally:

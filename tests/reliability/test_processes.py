@@ -19,27 +19,49 @@ import pytest
 from cli_invoke import error_line, invoke
 from synthetic_raw import write_logs
 
-from symbench.core import run_command, verify_cli
-from symbench.core import sweep as sweeping
 from symbench.core.data.importer import import_logs
-from symbench.core.results import read_record, write_record
+from symbench.core.runs import run_cli as run_command
+from symbench.core.runs import sweep as sweeping
+from symbench.core.runs import verify_cli
+from symbench.core.runs.results import read_record, write_record
 
 SYMBENCH = str(Path(sys.executable).parent / "symbench")
 
 
 def sweep_command(output: Path, *extra: str) -> list[str]:
     """Four quick runs on the stand-in smoke dataset, two at a time."""
-    return [SYMBENCH, "sweep", "--models", "sdnn,ffnn", "--robots", "hexa", "--seeds", "0,1",
-            "--preset", "smoke", "--evaluators", "torque-error", "--workers", "2",
-            "--output", str(output), *extra]
+    return [
+        SYMBENCH,
+        "sweep",
+        "--models",
+        "sdnn,ffnn",
+        "--robots",
+        "hexa",
+        "--seeds",
+        "0,1",
+        "--preset",
+        "smoke",
+        "--evaluators",
+        "torque-error",
+        "--workers",
+        "2",
+        "--output",
+        str(output),
+        *extra,
+    ]
 
 
 @contextlib.contextmanager
 def running(command: list[str], home: Path) -> Iterator[subprocess.Popen]:
     """`command` in a session of its own, whatever is left of which is killed at the end."""
-    proc = subprocess.Popen(command, env={**os.environ, "SYMBENCH_HOME": str(home)},
-                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                            start_new_session=True)
+    proc = subprocess.Popen(
+        command,
+        env={**os.environ, "SYMBENCH_HOME": str(home)},
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        text=True,
+        start_new_session=True,
+    )
     try:
         yield proc
     finally:
@@ -52,8 +74,11 @@ def workers_of(proc: subprocess.Popen, n: int, timeout: float = 120) -> list[psu
     deadline = time.monotonic() + timeout
     while time.monotonic() < deadline:
         assert proc.poll() is None, proc.stdout.read()
-        workers = [p for p in psutil.Process(proc.pid).children()
-                   if "resource_tracker" not in " ".join(p.cmdline())]
+        workers = [
+            p
+            for p in psutil.Process(proc.pid).children()
+            if "resource_tracker" not in " ".join(p.cmdline())
+        ]
         if len(workers) >= n:
             return workers
         time.sleep(0.1)
@@ -75,35 +100,49 @@ def test_ctrl_c_summary_counts_every_finished_run(smoke_hexa, home, tmp_path):
         os.kill(proc.pid, signal.SIGINT)  # the runs under way finish while the sweep stops
         output = proc.communicate(timeout=300)[0]
     assert proc.returncode == 1, output
-    found = re.search(r"interrupted with (\d) of 4 runs finished; run the same command again", output)
+    found = re.search(
+        r"interrupted with (\d) of 4 runs finished; run the same command again", output
+    )
     assert found, output
     records = list((tmp_path / "results").glob("*.json"))
     assert all(read_record(r) for r in records)
     assert int(found.group(1)) == len(records) < 4
 
 
-def test_a_ray_address_where_no_cluster_answers_is_an_error_within_seconds(smoke_hexa, home, tmp_path):
+def test_a_ray_address_where_no_cluster_answers_is_an_error_within_seconds(
+    smoke_hexa, home, tmp_path
+):
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
         port = s.getsockname()[1]  # free: nothing listens there
-    command = sweep_command(tmp_path / "results", "--executor", "ray", "--address", f"127.0.0.1:{port}")
+    command = sweep_command(
+        tmp_path / "results", "--executor", "ray", "--address", f"127.0.0.1:{port}"
+    )
     with running(command, home) as proc:
         output = proc.communicate(timeout=60)[0]
     assert proc.returncode == 1
     assert f"Error: cannot reach the Ray cluster at 127.0.0.1:{port} (Connection refused" in output
 
 
-@pytest.mark.parametrize("args", [
-    ("run", "--model", "sdnn", "--robot", "hexa"),
-    ("sweep", "--models", "sdnn", "--robots", "hexa"),
-    ("data", "generate", "--robot", "hexa"),
-    ("verify", __file__),
-], ids=["run", "sweep", "data generate", "verify"])
+@pytest.mark.parametrize(
+    "args",
+    [
+        ("run", "--model", "sdnn", "--robot", "hexa"),
+        ("sweep", "--models", "sdnn", "--robots", "hexa"),
+        ("data", "generate", "--robot", "hexa"),
+        ("verify", __file__),
+    ],
+    ids=["run", "sweep", "data generate", "verify"],
+)
 def test_workers_0_is_refused_alike_by_every_command(monkeypatch, args):
     def never(*args, **kwargs):
         raise AssertionError("the command started working")
 
-    for module, name in ((run_command, "run_spec"), (sweeping, "sweep"), (verify_cli, "verify_record")):
+    for module, name in (
+        (run_command, "run_spec"),
+        (sweeping, "sweep"),
+        (verify_cli, "verify_record"),
+    ):
         monkeypatch.setattr(module, name, never)
     message = error_line(invoke(*args, "--workers", "0"), 2)
     assert "Invalid value for '--workers': 0 is not in the range x>=1" in message

@@ -5,9 +5,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from symbench.core.errors import SymbenchError
-from symbench.core.robots import load_robot, load_spec, parse_spec
-from symbench.core.scenario import Scenario
+from symbench.core.common.errors import SymbenchError
+from symbench.core.robot.specs import load_robot, load_spec, parse_spec
+from symbench.core.sim.scenario import Scenario
 
 ROBOTS = {"magneto": (4, 2), "hexa": (6, 6), "nona": (9, 9)}
 
@@ -73,7 +73,9 @@ def test_unknown_robot_suggests_names():
 
 
 def test_scenario_round_trip_and_validation():
-    s = Scenario("hexa", inclination_deg=60, heading_deg=90, yaw_deg=15, leg_order=(0, 2, 4, 1, 3, 5))
+    s = Scenario(
+        "hexa", inclination_deg=60, heading_deg=90, yaw_deg=15, leg_order=(0, 2, 4, 1, 3, 5)
+    )
     assert Scenario.from_dict(s.to_dict()) == s
     with pytest.raises(SymbenchError, match="inclination"):
         Scenario("hexa", inclination_deg=200)
@@ -84,7 +86,7 @@ def test_scenario_round_trip_and_validation():
 
 
 def _spec_variant(tmp_path, replacements: dict[str, str]):
-    from symbench.core.robots import load_spec
+    from symbench.core.robot.specs import load_spec
     from symbench.plugins.robots import ROBOTS_DIR
 
     text = (ROBOTS_DIR / "hexa" / "robot.toml").read_text()
@@ -102,7 +104,9 @@ def test_a_spec_whose_legs_lack_the_declared_symmetry_is_refused(tmp_path):
 
 
 def test_a_spec_whose_base_lacks_the_declared_symmetry_is_refused(tmp_path):
-    load = _spec_variant(tmp_path, {"inertia = [0.011005, 0.011005,": "inertia = [0.00834, 0.01367,"})
+    load = _spec_variant(
+        tmp_path, {"inertia = [0.011005, 0.011005,": "inertia = [0.00834, 0.01367,"}
+    )
     with pytest.raises(SymbenchError, match="equal x and y base.inertia"):
         load()
 
@@ -114,8 +118,11 @@ def test_a_shift_that_is_not_the_smallest_rotation_is_refused(tmp_path):
 
 
 def test_mounts_going_round_twice_are_refused(tmp_path):
-    text = {"angles_deg = [30.0, 90.0, 150.0, 210.0, 270.0, 330.0]":
-            "angles_deg = [30.0, 150.0, 270.0, 390.0, 510.0, 630.0]"}
+    text = {
+        "angles_deg = [30.0, 90.0, 150.0, 210.0, 270.0, 330.0]": (
+            "angles_deg = [30.0, 150.0, 270.0, 390.0, 510.0, 630.0]"
+        )
+    }
     with pytest.raises(SymbenchError, match="once around"):
         _spec_variant(tmp_path, text)()
 
@@ -131,12 +138,15 @@ def test_a_missing_leg_table_is_named():
         parse_spec(raw, "x.toml")
 
 
-@pytest.mark.parametrize("table, key, value, message", [
-    ("leg", "joint_damping", -0.1, "joint_damping: expected a non-negative number"),
-    ("ankle", "stiffness", -1.0, "stiffness: expected a non-negative number"),
-    ("ankle", "masses", [0.03, 0.0, 0.3], "masses: expected 3 positive numbers"),
-    ("ankle", "lower", [-0.5, 0.5, -2.0], "lower limit must be below its upper"),
-])
+@pytest.mark.parametrize(
+    "table, key, value, message",
+    [
+        ("leg", "joint_damping", -0.1, "joint_damping: expected a non-negative number"),
+        ("ankle", "stiffness", -1.0, "stiffness: expected a non-negative number"),
+        ("ankle", "masses", [0.03, 0.0, 0.3], "masses: expected 3 positive numbers"),
+        ("ankle", "lower", [-0.5, 0.5, -2.0], "lower limit must be below its upper"),
+    ],
+)
 def test_physically_impossible_values_are_named(table, key, value, message):
     import tomllib
 

@@ -5,10 +5,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from symbench.core.runner import RunSpec, run
-from symbench.core.scenario import Scenario
+from symbench.core.runs.runner import RunSpec, run
 from symbench.core.sim.learned_control import track
 from symbench.core.sim.rollout import simulate
+from symbench.core.sim.scenario import Scenario
 
 PD = (2.0, 0.3)  # a tenth of hexa's servo gains, as the evaluator uses
 
@@ -43,8 +43,17 @@ def test_zero_torque_falls_off_the_wall(wall_reference):
 
 
 def test_closed_loop_evaluator_in_a_run(smoke_home, tmp_path):
-    record = run(RunSpec(model="sdnn", robot="hexa", preset="smoke", evaluators=("closed-loop",),
-                         output=tmp_path, progress=False, max_epochs=2))
+    record = run(
+        RunSpec(
+            model="sdnn",
+            robot="hexa",
+            preset="smoke",
+            evaluators=("closed-loop",),
+            output=tmp_path,
+            progress=False,
+            max_epochs=2,
+        )
+    )
     metrics = record.metrics["closed-loop"]
     assert metrics["references"] >= 1 and metrics["horizon_s"] == 0.3
     for prefix in ("", "pd_"):
@@ -59,6 +68,11 @@ def test_references_are_the_test_trajectories_by_id():
     from symbench.plugins.evaluators.closed_loop import held_out_scenarios
 
     # trajectory 1 failed in generation: ids are 0, 2, 3 at positions 0, 1, 2
-    dataset = SimpleNamespace(trajectory_ids=np.array([0, 2, 3]),
-                              scenarios=({"yaw_deg": 0.0}, {"yaw_deg": 20.0}, {"yaw_deg": 30.0}))
-    assert held_out_scenarios(dataset, np.array([3, 2]), 2) == [{"yaw_deg": 30.0}, {"yaw_deg": 20.0}]
+    dataset = SimpleNamespace(
+        trajectory_ids=np.array([0, 2, 3]),
+        scenarios=({"yaw_deg": 0.0}, {"yaw_deg": 20.0}, {"yaw_deg": 30.0}),
+    )
+    assert held_out_scenarios(dataset, np.array([3, 2]), 2) == [
+        {"yaw_deg": 30.0},
+        {"yaw_deg": 20.0},
+    ]

@@ -8,22 +8,26 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
+from symbench.core.board.leaderboard import load_records
+from symbench.core.board.publish import publish
 from symbench.core.cli import build_cli
-from symbench.core.leaderboard import load_records
-from symbench.core.publish import publish
 
 BOARD = Path(__file__).resolve().parents[2] / "leaderboards"
 MADE = (".md", ".csv", ".png")
 
 
 def _made_files(folder: Path) -> dict[str, bytes]:
-    return {p.name: p.read_bytes() for p in folder.iterdir()
-            if p.suffix in MADE and p.name != "README.md"}
+    return {
+        p.name: p.read_bytes()
+        for p in folder.iterdir()
+        if p.suffix in MADE and p.name != "README.md"
+    }
 
 
 def test_committed_tables_regenerate_identically(tmp_path):
-    result = CliRunner().invoke(build_cli(), ["leaderboard", "--results", str(BOARD / "records"),
-                                              "--out", str(tmp_path)])
+    result = CliRunner().invoke(
+        build_cli(), ["leaderboard", "--results", str(BOARD / "records"), "--out", str(tmp_path)]
+    )
     assert result.exit_code == 0, result.output
     made, committed = _made_files(tmp_path), _made_files(BOARD)
     assert sorted(made) == sorted(committed)

@@ -9,14 +9,14 @@ import pytest
 from click.testing import CliRunner
 
 import symbench
-from symbench.core import registry
 from symbench.core.cli import build_cli
+from symbench.core.common.errors import SymbenchError, UnknownNameError
 from symbench.core.data.dataset import load_dataset
 from symbench.core.data.presets import dataset_id
-from symbench.core.errors import SymbenchError, UnknownNameError
-from symbench.core.provenance import build_hyperparameters, plugin_info
-from symbench.core.results import read_record
-from symbench.core.runner import RunSpec, run
+from symbench.core.data.provenance import build_hyperparameters, plugin_info
+from symbench.core.plugin import registry
+from symbench.core.runs.results import read_record
+from symbench.core.runs.runner import RunSpec, run
 
 MODELS = ("sdnn", "sdgnn", "ffnn", "ffnn-leg", "gnn")
 ROBOTS = ("magneto", "hexa", "nona")
@@ -26,8 +26,15 @@ EVALUATORS = ("torque-error", "equivariance", "invariance")
 @pytest.mark.parametrize("robot", ROBOTS)
 @pytest.mark.parametrize("model", MODELS)
 def test_every_model_on_every_robot_writes_a_valid_record(smoke_home, tmp_path, model, robot):
-    spec = RunSpec(model=model, robot=robot, preset="smoke", evaluators=EVALUATORS,
-                   output=tmp_path, progress=False, max_epochs=2)
+    spec = RunSpec(
+        model=model,
+        robot=robot,
+        preset="smoke",
+        evaluators=EVALUATORS,
+        output=tmp_path,
+        progress=False,
+        max_epochs=2,
+    )
     record = run(spec)
     assert read_record(spec.record_path) == record
     assert record.dataset.id == dataset_id(robot, "smoke")
@@ -48,9 +55,25 @@ def test_every_model_on_every_robot_writes_a_valid_record(smoke_home, tmp_path, 
 
 
 def test_cli_prints_a_table_and_writes_the_record(smoke_home, tmp_path):
-    result = CliRunner().invoke(build_cli(), [
-        "run", "--model", "sdnn", "--robot", "hexa", "--preset", "smoke", "--max-epochs", "2",
-        "--evaluators", "torque-error", "--output", str(tmp_path)], catch_exceptions=False)
+    result = CliRunner().invoke(
+        build_cli(),
+        [
+            "run",
+            "--model",
+            "sdnn",
+            "--robot",
+            "hexa",
+            "--preset",
+            "smoke",
+            "--max-epochs",
+            "2",
+            "--evaluators",
+            "torque-error",
+            "--output",
+            str(tmp_path),
+        ],
+        catch_exceptions=False,
+    )
     assert result.exit_code == 0, result.output
     assert "torque-error" in result.stdout and "rmse" in result.stdout
     assert read_record(tmp_path / "hexa__iid__sdnn__acc__torch__seed0.json").split == "iid"
@@ -62,15 +85,29 @@ def test_names_are_checked_before_any_work(tmp_path):
     with pytest.raises(UnknownNameError, match="did you mean torque-error"):
         run(RunSpec(model="sdnn", robot="hexa", evaluators=("torque-eror",), output=tmp_path))
     with pytest.raises(SymbenchError, match="preset"):
-        run(RunSpec(model="sdnn", robot="hexa", preset="huge", evaluators=("torque-error",),
-                    output=tmp_path))
+        run(
+            RunSpec(
+                model="sdnn",
+                robot="hexa",
+                preset="huge",
+                evaluators=("torque-error",),
+                output=tmp_path,
+            )
+        )
     assert not list(tmp_path.iterdir())
 
 
 def test_a_run_may_choose_the_next_variant(smoke_home, tmp_path):
-    spec = RunSpec(model="sdnn", robot="hexa", preset="smoke", variant="next",
-                   evaluators=("torque-error", "equivariance"), output=tmp_path,
-                   progress=False, max_epochs=2)
+    spec = RunSpec(
+        model="sdnn",
+        robot="hexa",
+        preset="smoke",
+        variant="next",
+        evaluators=("torque-error", "equivariance"),
+        output=tmp_path,
+        progress=False,
+        max_epochs=2,
+    )
     record = run(spec)
     assert record.model.variant == "next"
     assert spec.record_path.name == "hexa__iid__sdnn__next__torch__seed0.json"
@@ -80,9 +117,17 @@ def test_a_run_may_choose_the_next_variant(smoke_home, tmp_path):
 
 
 def test_timings_count_each_second_once(smoke_home, tmp_path):
-    record = run(RunSpec(model="sdnn", robot="hexa", preset="smoke",
-                         evaluators=("torque-error", "generalization"), output=tmp_path,
-                         progress=False, max_epochs=2))
+    record = run(
+        RunSpec(
+            model="sdnn",
+            robot="hexa",
+            preset="smoke",
+            evaluators=("torque-error", "generalization"),
+            output=tmp_path,
+            progress=False,
+            max_epochs=2,
+        )
+    )
     timings = record.timings_s
     assert timings["retraining_s"] > 0 and timings["evaluation_s"] >= 0
     assert record.training.stopped_early == (record.training.epochs < 2)
@@ -93,22 +138,42 @@ def sha256_of(data: bytes) -> str:
 
 
 def test_a_record_carries_what_it_takes_to_rerun_it(smoke_home, tmp_path):
-    spec = RunSpec(model="sdnn", robot="hexa", preset="smoke", evaluators=("torque-error",),
-                   output=tmp_path, progress=False, max_epochs=2)
+    spec = RunSpec(
+        model="sdnn",
+        robot="hexa",
+        preset="smoke",
+        evaluators=("torque-error",),
+        output=tmp_path,
+        progress=False,
+        max_epochs=2,
+    )
     record = run(spec)
     package = Path(symbench.__file__).parent / "plugins" / "torch_models"
-    sources = "".join(f"{p.relative_to(package).as_posix()}\0{sha256_of(p.read_bytes())}\n"
-                      for p in sorted(package.rglob("*.py")))
+    sources = "".join(
+        f"{p.relative_to(package).as_posix()}\0{sha256_of(p.read_bytes())}\n"
+        for p in sorted(package.rglob("*.py"))
+    )
     assert record.model.plugin.model_dump() == {
-        "module": "symbench.plugins.torch_models.sdnn", "distribution": "symbench",
-        "version": symbench.__version__, "source_sha256": sha256_of(sources.encode())}
+        "module": "symbench.plugins.torch_models.sdnn",
+        "distribution": "symbench",
+        "version": symbench.__version__,
+        "source_sha256": sha256_of(sources.encode()),
+    }
     assert record.model.hyperparameters == {"latent": 128, "mlp_layers": 2, "steps": 2}
     assert record.training.config.model_dump() == {
-        "seed": 0, "batch_size": 64, "max_epochs": 2, "stop_ratio": 0.7, "stop_patience": 5,
-        "learning_rate": 5e-4, "hyper": {}, "compile": False}
+        "seed": 0,
+        "batch_size": 64,
+        "max_epochs": 2,
+        "stop_ratio": 0.7,
+        "stop_patience": 5,
+        "learning_rate": 5e-4,
+        "hyper": {},
+        "compile": False,
+    }
     best = next((tmp_path / "checkpoints" / spec.key()).glob("*/iid__acc/best"))
     assert record.training.checkpoint_sha256 == {
-        p.name: sha256_of(p.read_bytes()) for p in sorted(best.iterdir())}
+        p.name: sha256_of(p.read_bytes()) for p in sorted(best.iterdir())
+    }
     assert set(record.training.checkpoint_sha256) >= {"model.safetensors"}
     assert record.dataset.content_hash == load_dataset(record.dataset.id).content_hash
 
@@ -118,4 +183,7 @@ def test_provenance_of_a_third_party_model_and_of_overridden_hyperparameters():
     info = plugin_info(entry)
     assert (info["distribution"], info["version"]) == ("symbench-example-plugin", "0.1.0")
     assert build_hyperparameters(registry.model("sdnn"), {"latent": 16}) == {
-        "latent": 16, "mlp_layers": 2, "steps": 2}
+        "latent": 16,
+        "mlp_layers": 2,
+        "steps": 2,
+    }

@@ -9,9 +9,9 @@ import sys
 import time
 from pathlib import Path
 
-from symbench.core.results import read_record
-from symbench.core.runner import RunSpec
-from symbench.core.sweep import plan, sweep
+from symbench.core.runs.results import read_record
+from symbench.core.runs.runner import RunSpec
+from symbench.core.runs.sweep import plan, sweep
 
 SYMBENCH = str(Path(sys.executable).parent / "symbench")
 MODELS = ("sdnn", "ffnn", "ffnn-leg")
@@ -19,12 +19,29 @@ MODELS = ("sdnn", "ffnn", "ffnn-leg")
 
 def test_interrupted_sweep_resumes_without_redoing_work(smoke_home, tmp_path):
     out = tmp_path / "results"
-    command = [SYMBENCH, "sweep", "--models", ",".join(MODELS), "--robots", "hexa",
-               "--seeds", "0", "--preset", "smoke", "--evaluators", "torque-error",
-               "--output", str(out)]
-    proc = subprocess.Popen(command, env={**os.environ, "SYMBENCH_HOME": str(smoke_home)},
-                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                            start_new_session=True)
+    command = [
+        SYMBENCH,
+        "sweep",
+        "--models",
+        ",".join(MODELS),
+        "--robots",
+        "hexa",
+        "--seeds",
+        "0",
+        "--preset",
+        "smoke",
+        "--evaluators",
+        "torque-error",
+        "--output",
+        str(out),
+    ]
+    proc = subprocess.Popen(
+        command,
+        env={**os.environ, "SYMBENCH_HOME": str(smoke_home)},
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        start_new_session=True,
+    )
     deadline = time.monotonic() + 240
     while not list(out.glob("*.json")):
         assert proc.poll() is None, proc.stdout.read().decode()
@@ -36,8 +53,9 @@ def test_interrupted_sweep_resumes_without_redoing_work(smoke_home, tmp_path):
     assert 1 <= len(first) < len(MODELS)
     before = {p: (p.stat().st_mtime_ns, p.read_bytes()) for p in first}
 
-    base = RunSpec(model="", robot="", preset="smoke", evaluators=("torque-error",),
-                   output=out, progress=False)
+    base = RunSpec(
+        model="", robot="", preset="smoke", evaluators=("torque-error",), output=out, progress=False
+    )
     specs = plan(MODELS, ["hexa"], ["iid"], [0], ["torch"], base)
     messages: list[str] = []
     ran = sweep(specs, report=messages.append)
@@ -52,8 +70,14 @@ def test_interrupted_sweep_resumes_without_redoing_work(smoke_home, tmp_path):
 def test_sweep_on_a_local_ray_cluster(smoke_home, tmp_path):
     import ray
 
-    base = RunSpec(model="", robot="", preset="smoke", evaluators=("torque-error",),
-                   output=tmp_path, progress=False)
+    base = RunSpec(
+        model="",
+        robot="",
+        preset="smoke",
+        evaluators=("torque-error",),
+        output=tmp_path,
+        progress=False,
+    )
     specs = plan(("sdnn", "ffnn"), ["hexa"], ["iid"], [0], ["torch"], base)
     try:
         ran = sweep(specs, executor="ray", report=lambda message: None)

@@ -13,13 +13,13 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-from symbench.core import runner
+from symbench.core.board.publish import publish
 from symbench.core.cli import build_cli
-from symbench.core.errors import SymbenchError
-from symbench.core.publish import publish
-from symbench.core.results import read_record, write_record
-from symbench.core.runner import RunSpec, run
-from symbench.core.verify import Tolerance, sample
+from symbench.core.common.errors import SymbenchError
+from symbench.core.runs import runner
+from symbench.core.runs.results import read_record, write_record
+from symbench.core.runs.runner import RunSpec, run
+from symbench.core.runs.verify import Tolerance, sample
 
 SMOKE = ("smoke",)
 
@@ -30,9 +30,19 @@ def records(smoke_home, tmp_path_factory) -> list[Path]:
     out = tmp_path_factory.mktemp("contribution")
     with pytest.MonkeyPatch.context() as patch:
         patch.setattr(runner, "git_commit", lambda: "1" * 40)
-        specs = [RunSpec(model="sdnn", robot="hexa", preset="smoke", seed=s,
-                         evaluators=("torque-error",), output=out, progress=False, max_epochs=2)
-                 for s in range(3)]
+        specs = [
+            RunSpec(
+                model="sdnn",
+                robot="hexa",
+                preset="smoke",
+                seed=s,
+                evaluators=("torque-error",),
+                output=out,
+                progress=False,
+                max_epochs=2,
+            )
+            for s in range(3)
+        ]
         for spec in specs:
             run(spec)
     return [spec.record_path for spec in specs]
@@ -110,7 +120,8 @@ def test_publish_refuses_a_sample_that_does_not_reproduce(records, tmp_path):
     assert str(error.value) == (
         f"{chosen}: does not reproduce: torque-error.rmse recorded "
         f"{read_record(chosen).metrics['torque-error']['rmse']!r}, reproduced {original!r} "
-        f"(agreement: {Tolerance()})")
+        f"(agreement: {Tolerance()})"
+    )
     assert not board.exists() and [p.name for p in tmp_path.iterdir()] == ["contribution"]
 
 
@@ -122,9 +133,10 @@ def test_a_record_of_another_dataset_version_is_not_re_run(records, tmp_path):
     result = verify(str(path))
     assert result.exit_code == 1
     here = read_record(records[0]).dataset.content_hash
-    assert (f"{path}: made on dataset {data['dataset']['id']} with content hash efefefefefef..., "
-            f"but this machine generates hash {here[:12]}...; it cannot be reproduced here"
-            ) in " ".join(result.output.split())
+    assert (
+        f"{path}: made on dataset {data['dataset']['id']} with content hash efefefefefef..., "
+        f"but this machine generates hash {here[:12]}...; it cannot be reproduced here"
+    ) in " ".join(result.output.split())
 
 
 def test_a_caller_on_other_torch_kernels_still_reproduces_the_record(records, smoke_home):
@@ -135,13 +147,19 @@ def test_a_caller_on_other_torch_kernels_still_reproduces_the_record(records, sm
     import subprocess
     import sys
 
-    from symbench.core.training_kernels import _cpu_has_avx2
+    from symbench.core.training.kernels import _cpu_has_avx2
 
     assert _cpu_has_avx2(), "the reference kernels need AVX2"
-    env = {**os.environ, "ATEN_CPU_CAPABILITY": "default", "MKL_CBWR": "COMPATIBLE",
-           "SYMBENCH_HOME": str(smoke_home), "MUJOCO_GL": "disable"}
+    env = {
+        **os.environ,
+        "ATEN_CPU_CAPABILITY": "default",
+        "MKL_CBWR": "COMPATIBLE",
+        "SYMBENCH_HOME": str(smoke_home),
+        "MUJOCO_GL": "disable",
+    }
     cli = Path(sys.executable).with_name("symbench")
-    out = subprocess.run([str(cli), "verify", str(records[0])], env=env, capture_output=True,
-                         text=True, timeout=600)
+    out = subprocess.run(
+        [str(cli), "verify", str(records[0])], env=env, capture_output=True, text=True, timeout=600
+    )
     assert out.returncode == 0, out.stdout + out.stderr
     assert "warning" not in out.stderr and "values agree" in out.stdout

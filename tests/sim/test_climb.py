@@ -9,13 +9,13 @@ import pytest
 from click.testing import CliRunner
 
 from symbench.core.cli import build_cli
-from symbench.core.errors import SymbenchError
-from symbench.core.raw import COLUMN_NAMES
-from symbench.core.robots import load_robot
-from symbench.core.scenario import Scenario
+from symbench.core.common.errors import SymbenchError
+from symbench.core.robot.specs import load_robot
 from symbench.core.sim.arena import Arena
 from symbench.core.sim.gait import SETTLE
+from symbench.core.sim.raw import COLUMN_NAMES
 from symbench.core.sim.rollout import run_climb, simulate
+from symbench.core.sim.scenario import Scenario
 from symbench.core.sim.setup import Climb
 from symbench.core.sim.symmetry import symmetry_error
 
@@ -48,18 +48,22 @@ def test_recorded_columns_are_consistent():
     assert set(a) == set(COLUMN_NAMES)
     dt = spec.control.timestep
     np.testing.assert_allclose(np.diff(a["q"], axis=0), dt * a["qd"][1:], atol=1e-12)
-    np.testing.assert_allclose(np.diff(a["base_pos"], axis=0), dt * a["base_linvel"][1:], atol=1e-12)
+    np.testing.assert_allclose(
+        np.diff(a["base_pos"], axis=0), dt * a["base_linvel"][1:], atol=1e-12
+    )
     np.testing.assert_allclose(np.diff(a["qd"], axis=0), dt * a["qdd"][:-1], atol=1e-9)
-    np.testing.assert_allclose(np.diff(a["base_linvel"], axis=0), dt * a["base_linacc"][:-1],
-                               atol=1e-9)
+    np.testing.assert_allclose(
+        np.diff(a["base_linvel"], axis=0), dt * a["base_linacc"][:-1], atol=1e-9
+    )
     assert np.abs(a["tau"]).max() < spec.control.torque_limit - 1e-6  # never needed the clip
 
 
 def test_slower_controller_still_climbs_and_records_applied_torques():
     """QP every 3 ms, servos every 1 ms: attached, and the recorded torque is the servo's."""
     spec = load_robot("hexa")
-    rollout = run_climb(Climb(spec, Arena(90.0, 0.0)), 0.6, record_period=0.001,
-                        control_period=0.003)
+    rollout = run_climb(
+        Climb(spec, Arena(90.0, 0.0)), 0.6, record_period=0.001, control_period=0.003
+    )
     assert rollout.attached and rollout.metrics["control_period"] == pytest.approx(0.003)
     tau = rollout.arrays["tau"]
     assert np.abs(tau).max() < spec.control.torque_limit - 1e-6  # never needed the clip
@@ -78,7 +82,7 @@ def test_simulate_records_every_six_milliseconds():
 def test_hexa_rotated_relabelled_run_reproduces_the_original():
     """60 degrees of base yaw + relabelling by one leg: same run, to 1e-6, over 1 s."""
     climb = Climb(load_robot("hexa"), Arena(60.0, 30.0), yaw_deg=10.0, seed=1)
-    worst, per_column, rollout = symmetry_error(climb, 1.0)
+    _, per_column, rollout = symmetry_error(climb, 1.0)
     assert rollout.attached
     for col in ("q", "qd", "tau", "contact", "magnet", "base_pos", "base_linvel"):
         assert per_column[col] < 1e-6, (col, per_column[col])
@@ -130,20 +134,26 @@ def test_bad_input_is_named():
 def test_sim_check_and_bench_commands():
     runner = CliRunner()
     cli = build_cli()
-    result = runner.invoke(cli, ["sim", "check", "--robot", "hexa", "--inclination", "30",
-                                 "--seconds", "0.4", "--json"])
+    result = runner.invoke(
+        cli,
+        ["sim", "check", "--robot", "hexa", "--inclination", "30", "--seconds", "0.4", "--json"],
+    )
     assert result.exit_code == 0, result.output
     report = json.loads(result.output)
     assert report["attached"] and report["torque_within_limit"]
     assert report["peak_torque_femur"] <= report["torque_limit"]
-    result = runner.invoke(cli, ["bench", "sim", "--robot", "magneto", "--seconds", "0.3", "--json"])
+    result = runner.invoke(
+        cli, ["bench", "sim", "--robot", "magneto", "--seconds", "0.3", "--json"]
+    )
     assert result.exit_code == 0, result.output
     bench = json.loads(result.output)
-    assert bench["ratio"] == pytest.approx(bench["control_steps_per_s"] / bench["raw_mj_step_per_s"])
+    assert bench["ratio"] == pytest.approx(
+        bench["control_steps_per_s"] / bench["raw_mj_step_per_s"]
+    )
     result = runner.invoke(cli, ["sim", "check", "--robot", "hexx"])
     assert result.exit_code != 0 and "hexa" in result.output
     result = runner.invoke(cli, ["sim", "mjcf", "--robot", "nona", "--inclination", "90"])
-    assert result.exit_code == 0 and result.output.count("_magnet\" body=\"leg") == 9
+    assert result.exit_code == 0 and result.output.count('_magnet" body="leg') == 9
 
 
 def test_a_plugin_robot_that_falls_makes_sim_check_fail(tmp_path):
@@ -151,13 +161,15 @@ def test_a_plugin_robot_that_falls_makes_sim_check_fail(tmp_path):
     magnets too weak for a wall it detaches, and `sim check` exits non-zero."""
     import tomllib
 
-    from symbench.core.entries import RobotEntry
-    from symbench.core.hookspecs import hookimpl
-    from symbench.core.plugins import PluginHost, set_host
+    from symbench.core.plugin.entries import RobotEntry
+    from symbench.core.plugin.hookspecs import hookimpl
+    from symbench.core.plugin.host import PluginHost, set_host
     from symbench.plugins.robots import ROBOTS_DIR
 
     text = (ROBOTS_DIR / "hexa" / "robot.toml").read_text()
-    text = text.replace('name = "hexa"', 'name = "weakling"').replace("force = 147.0", "force = 3.0")
+    text = text.replace('name = "hexa"', 'name = "weakling"').replace(
+        "force = 147.0", "force = 3.0"
+    )
     assert tomllib.loads(text)["magnet"]["force"] == 3.0
     (tmp_path / "weakling").mkdir()
     (tmp_path / "weakling" / "robot.toml").write_text(text)
@@ -172,8 +184,10 @@ def test_a_plugin_robot_that_falls_makes_sim_check_fail(tmp_path):
     host.register(Plugin(), "weak-robots")
     set_host(host)
     try:
-        result = CliRunner().invoke(build_cli(), ["sim", "check", "--robot", "weakling",
-                                                  "--inclination", "90", "--seconds", "1"])
+        result = CliRunner().invoke(
+            build_cli(),
+            ["sim", "check", "--robot", "weakling", "--inclination", "90", "--seconds", "1"],
+        )
     finally:
         set_host(None)
     assert result.exit_code == 1, result.output

@@ -6,11 +6,11 @@ import math
 
 import pytest
 
-from symbench.core.robots import load_robot
-from symbench.core.scenario import Scenario
+from symbench.core.robot.specs import load_robot
 from symbench.core.sim.arena import Arena
 from symbench.core.sim.check import check
 from symbench.core.sim.gait import SETTLE
+from symbench.core.sim.scenario import Scenario
 from symbench.core.sim.setup import Climb
 from symbench.core.sim.symmetry import symmetry_error
 

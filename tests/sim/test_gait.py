@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from symbench.core.robots import load_robot
+from symbench.core.robot.specs import load_robot
 from symbench.core.sim.arena import Arena
 from symbench.core.sim.gait import RELEASE, SETTLE, STANCE, SWING, TOUCHDOWN, hermite
 from symbench.core.sim.setup import Climb
@@ -17,8 +17,11 @@ def test_hermite_hits_ends_and_is_differentiated_right():
     np.testing.assert_allclose(hermite(p0, v0, p1, v1, 0.0, duration)[:2], [p0, v0], atol=1e-15)
     np.testing.assert_allclose(hermite(p0, v0, p1, v1, 1.0, duration)[:2], [p1, v1], atol=1e-15)
     for u in (0.2, 0.7):
-        pos, vel, acc = hermite(p0, v0, p1, v1, u, duration)
-        ahead, behind = hermite(p0, v0, p1, v1, u + eps, duration), hermite(p0, v0, p1, v1, u - eps, duration)
+        _, vel, acc = hermite(p0, v0, p1, v1, u, duration)
+        ahead, behind = (
+            hermite(p0, v0, p1, v1, u + eps, duration),
+            hermite(p0, v0, p1, v1, u - eps, duration),
+        )
         np.testing.assert_allclose((ahead[0] - behind[0]) / (2 * eps * duration), vel, atol=1e-7)
         np.testing.assert_allclose((ahead[1] - behind[1]) / (2 * eps * duration), acc, atol=1e-6)
 

@@ -6,7 +6,7 @@ import mujoco
 import numpy as np
 import pytest
 
-from symbench.core.robots import load_robot
+from symbench.core.robot.specs import load_robot
 from symbench.core.sim.arena import Arena
 from symbench.core.sim.kinematics import leg_fk, leg_ik
 from symbench.core.sim.layout import ModelLayout
@@ -31,8 +31,9 @@ def test_model_sizes(built):
     assert model.opt.noslip_iterations == 0
     adhesion = [i for i in range(model.nu) if model.actuator_trntype[i] == mujoco.mjtTrn.mjTRN_BODY]
     assert len(adhesion) == n
-    np.testing.assert_allclose(model.actuator_gear[adhesion, 0] * model.actuator_gainprm[adhesion, 0],
-                               spec.magnet.force)
+    np.testing.assert_allclose(
+        model.actuator_gear[adhesion, 0] * model.actuator_gainprm[adhesion, 0], spec.magnet.force
+    )
     total = model.body_subtreemass[model.body("base").id]
     assert total == pytest.approx(spec.total_mass)
 
@@ -67,13 +68,20 @@ def test_kinematics_match_mujoco(built):
     mujoco.mj_jac(model, data, jac, None, data.xpos[lay.ankle_body[0]], lay.ankle_body[0])
     in_leg = spec.leg_rotations()[0].T @ jac[:, lay.dof[0]]
     eps = 1e-7
-    numeric = np.stack([(leg_fk(spec, q[0] + eps * e) - leg_fk(spec, q[0] - eps * e)) / (2 * eps)
-                        for e in np.eye(3)], axis=1)
+    numeric = np.stack(
+        [
+            (leg_fk(spec, q[0] + eps * e) - leg_fk(spec, q[0] - eps * e)) / (2 * eps)
+            for e in np.eye(3)
+        ],
+        axis=1,
+    )
     np.testing.assert_allclose(in_leg, numeric, atol=1e-8)
 
 
 def test_ik_inverts_fk():
     spec = load_robot("hexa")
     rng = np.random.default_rng(1)
-    q = np.stack([rng.uniform(-1, 1, 50), rng.uniform(-0.5, 1.2, 50), rng.uniform(-2.3, -0.2, 50)], 1)
+    q = np.stack(
+        [rng.uniform(-1, 1, 50), rng.uniform(-0.5, 1.2, 50), rng.uniform(-2.3, -0.2, 50)], 1
+    )
     np.testing.assert_allclose(leg_ik(spec, leg_fk(spec, q)), q, atol=1e-10)

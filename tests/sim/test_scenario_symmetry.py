@@ -9,27 +9,33 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from symbench.core.robots import load_robot
-from symbench.core.scenario import Scenario
+from symbench.core.robot.specs import load_robot
 from symbench.core.sim.rollout import simulate
+from symbench.core.sim.scenario import Scenario
 from symbench.core.sim.setup import Climb
 
 
-@pytest.mark.parametrize("robot,yaw,direction", [("hexa", 120.0, "forward"),
-                                                 ("magneto", 180.0, "left"),
-                                                 ("nona", 40.0, "forward")])
+@pytest.mark.parametrize(
+    "robot,yaw,direction",
+    [("hexa", 120.0, "forward"), ("magneto", 180.0, "left"), ("nona", 40.0, "forward")],
+)
 def test_turned_scenario_reproduces_the_relabelled_run(robot, yaw, direction):
     spec = load_robot(robot)
-    base = simulate(Scenario(robot=robot, inclination_deg=90.0, yaw_deg=7.0,
-                             direction=direction, seconds=0.5))
-    turned = simulate(Scenario(robot=robot, inclination_deg=90.0, yaw_deg=7.0 + yaw,
-                               direction=direction, seconds=0.5))
+    base = simulate(
+        Scenario(robot=robot, inclination_deg=90.0, yaw_deg=7.0, direction=direction, seconds=0.5)
+    )
+    turned = simulate(
+        Scenario(
+            robot=robot, inclination_deg=90.0, yaw_deg=7.0 + yaw, direction=direction, seconds=0.5
+        )
+    )
     assert base.attached and turned.attached
     k = round(yaw / spec.symmetry_angle_deg) * spec.symmetry_shift
     source = (np.arange(spec.n_legs) + k) % spec.n_legs  # turned leg j is base leg j + k
     for column in ("q", "qd", "tau", "contact", "magnet"):
-        np.testing.assert_allclose(turned.arrays[column], base.arrays[column][:, source],
-                                   rtol=0, atol=1e-6, err_msg=column)
+        np.testing.assert_allclose(
+            turned.arrays[column], base.arrays[column][:, source], rtol=0, atol=1e-6, err_msg=column
+        )
 
 
 def test_within_the_first_step_the_direction_is_the_body_frames():
@@ -46,13 +52,15 @@ def test_turned_scenario_is_the_group_action_on_the_raw_states():
     original for the rotation g that relabels by the symmetry step."""
     from symbench.core.data.frames import LegFrames
     from symbench.core.data.raw_action import act_on_raw
-    from symbench.core.groups import shift
+    from symbench.core.symmetry.groups import shift
 
     spec = load_robot("hexa")
-    base = simulate(Scenario(robot="hexa", inclination_deg=60.0, heading_deg=30.0, yaw_deg=10.0,
-                             seconds=0.5))
-    turned = simulate(Scenario(robot="hexa", inclination_deg=60.0, heading_deg=30.0,
-                               yaw_deg=70.0, seconds=0.5))
+    base = simulate(
+        Scenario(robot="hexa", inclination_deg=60.0, heading_deg=30.0, yaw_deg=10.0, seconds=0.5)
+    )
+    turned = simulate(
+        Scenario(robot="hexa", inclination_deg=60.0, heading_deg=30.0, yaw_deg=70.0, seconds=0.5)
+    )
     frames = LegFrames.from_spec(spec)
     errors = {}
     for k in range(6):

@@ -6,9 +6,9 @@ so it must still catch it.
 
 from __future__ import annotations
 
-from symbench.core.entries import ModelEntry
-from symbench.core.hookspecs import hookimpl
-from symbench.core.lazy import Lazy
+from symbench.core.common.lazy import Lazy
+from symbench.core.plugin.entries import ModelEntry
+from symbench.core.plugin.hookspecs import hookimpl
 
 
 def build_torch(dims, latent: int = 16):
@@ -42,8 +42,10 @@ def build_jax(dims, latent: int = 16):
     return LegBiasedSDNN()
 
 
-ENTRIES = [ModelEntry("broken-sdnn", b, "leg_grouped", "acc", True, Lazy(f"{__name__}:build_{b}"))
-           for b in ("torch", "jax")]
+ENTRIES = [
+    ModelEntry("broken-sdnn", b, "leg_grouped", "acc", True, Lazy(f"{__name__}:build_{b}"))
+    for b in ("torch", "jax")
+]
 
 
 @hookimpl

@@ -9,7 +9,7 @@ import pytest
 from click.testing import CliRunner
 
 from symbench.core.cli import cli
-from symbench.core.plugins import PluginHost, set_host
+from symbench.core.plugin.host import PluginHost, set_host
 
 
 def invoke(*args: str):

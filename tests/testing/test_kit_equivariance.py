@@ -6,9 +6,16 @@ import numpy as np
 import pytest
 from broken_models import ENTRIES as BROKEN
 
-from symbench.core import registry, schema
-from symbench.core.groups import cyclic, dihedral
-from symbench.testing import TOLERANCES, assert_equivariant, check_model, element_errors, robot_group
+from symbench.core.data import schema
+from symbench.core.plugin import registry
+from symbench.core.symmetry.groups import cyclic, dihedral
+from symbench.testing import (
+    TOLERANCES,
+    assert_equivariant,
+    check_model,
+    element_errors,
+    robot_group,
+)
 
 
 @pytest.mark.parametrize("robot", ["magneto", "hexa", "nona"])
@@ -51,8 +58,13 @@ def test_reflections_act_with_the_feature_signs():
         return x[..., q]
 
     group = dihedral(6)
-    errors = element_errors({"float64": joint_angles}, group, layout.size, layout.reflection_signs,
-                            schema.TARGET.reflection_signs)
+    errors = element_errors(
+        {"float64": joint_angles},
+        group,
+        layout.size,
+        layout.reflection_signs,
+        schema.TARGET.reflection_signs,
+    )
     assert len(errors) == 12 and max(e.errors["float64"] for e in errors) == 0.0
     report = check_model(registry.model("sdnn", "torch"), group, hyper={"latent": 16})
     assert not report.equivariant
@@ -70,5 +82,8 @@ def test_report_serializes():
     report = check_model(registry.model("gnn", "jax"), robot_group("nona"))
     d = report.to_dict()
     assert d["claims_equivariance"] is False and d["passed"] and d["max_error"]["float64"] is None
-    assert np.isfinite(check_model(registry.model("sdnn", "torch"), cyclic(4, 2), hyper={"latent": 8})
-                       .to_dict()["max_error"]["float32"])
+    assert np.isfinite(
+        check_model(registry.model("sdnn", "torch"), cyclic(4, 2), hyper={"latent": 8}).to_dict()[
+            "max_error"
+        ]["float32"]
+    )

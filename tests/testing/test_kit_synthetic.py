@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from symbench.core.groups import cyclic
-from symbench.core.model_dims import dims_of
+from symbench.core.data.model_dims import dims_of
+from symbench.core.symmetry.groups import cyclic
 from symbench.testing import equivariant_target, synthetic_views
 
 
@@ -20,7 +20,8 @@ def test_target_is_equivariant_and_shared_across_seeds():
     z = np.random.default_rng(0).normal(size=(10, 6, 5))
     group = cyclic(6)
     for g in group:
-        np.testing.assert_allclose(equivariant_target(group.act(g, z)),
-                                   group.act(g, equivariant_target(z)), atol=1e-12)
+        np.testing.assert_allclose(
+            equivariant_target(group.act(g, z)), group.act(g, equivariant_target(z)), atol=1e-12
+        )
     a, b = synthetic_views(4, 10, seed=0), synthetic_views(4, 10, seed=1)
     assert not np.allclose(a["vector"].inputs["x"], b["vector"].inputs["x"])

@@ -3,20 +3,20 @@
 The hook returns plain entries; torch is imported only when the network is built.
 """
 
-from symbench.core.entries import ModelEntry
-from symbench.core.hookspecs import hookimpl
-from symbench.core.lazy import Lazy
+from symbench import Lazy, ModelEntry, hookimpl
 
 
 @hookimpl
 def symbench_models() -> list:
-    return [ModelEntry(
-        name="leg-attention",
-        backend="torch",
-        view="leg_grouped",  # per-leg features; the robot's rotations permute legs
-        variant="acc",
-        equivariant=True,  # claimed, so the equivariance kit holds it to it
-        build=Lazy("symbench_example_plugin.leg_attention:build"),
-        learning_rate=5e-4,
-        description="per-leg MLP, self-attention across legs, per-leg decoder",
-    )]
+    return [
+        ModelEntry(
+            name="leg-attention",
+            backend="torch",
+            view="leg_grouped",  # per-leg features; the robot's rotations permute legs
+            variant="acc",
+            equivariant=True,  # claimed, so the equivariance kit holds it to it
+            build=Lazy("symbench_example_plugin.leg_attention:build"),
+            learning_rate=5e-4,
+            description="per-leg MLP, self-attention across legs, per-leg decoder",
+        )
+    ]

@@ -9,7 +9,7 @@ from __future__ import annotations
 import torch
 from torch import nn
 
-from symbench.core.model_dims import ModelDims
+from symbench import ModelDims
 
 
 class LegAttention(nn.Module):

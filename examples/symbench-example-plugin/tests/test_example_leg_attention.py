@@ -2,21 +2,24 @@
 
 from __future__ import annotations
 
-from symbench.core import registry
-from symbench.core.training import TrainConfig, train
+from symbench import TrainConfig, model_entry, train
 from symbench.testing import synthetic_views
 
 
 def test_leg_attention_is_equivariant_on_every_builtin_robot(symbench_kit, symbench_groups):
-    entry = registry.model("leg-attention", "torch")  # found through the entry point
+    entry = model_entry("leg-attention", "torch")  # found through the entry point
     for group in symbench_groups.values():
         report = symbench_kit.assert_equivariant(entry, group)
         assert report.max_error("float64") <= 1e-10
 
 
 def test_leg_attention_learns():
-    entry = registry.model("leg-attention", "torch")
+    entry = model_entry("leg-attention", "torch")
     tr, va = synthetic_views(6, 512, seed=0), synthetic_views(6, 128, seed=1)
-    model = train(entry, tr["leg_grouped"], va["leg_grouped"],
-                  TrainConfig(max_epochs=4, hyper={"latent": 16}, progress=False))
+    model = train(
+        entry,
+        tr["leg_grouped"],
+        va["leg_grouped"],
+        TrainConfig(max_epochs=4, hyper={"latent": 16}, progress=False),
+    )
     assert min(model.history["val_loss"][1:]) < model.history["val_loss"][0]

@@ -1,8 +1,8 @@
 """Datasets: generation, storage, views, splits and import (see dataset.py for the API).
 
-    from symbench.core.data import load_dataset
-    ds = load_dataset("hexa-climb-small-v4")
-    train, val, test = ds.split_views("leg_grouped", "acc", "iid", seed=0)
+from symbench.core.data import load_dataset
+ds = load_dataset("hexa-climb-small-v4")
+train, val, test = ds.split_views("leg_grouped", "acc", "iid", seed=0)
 """
 
 from symbench.core.data.dataset import Dataset, load_dataset

@@ -9,7 +9,7 @@ import click
 from rich.console import Console
 from rich.table import Table
 
-from symbench.core.cli_types import SEED, WORKERS, WritableFolder
+from symbench.core.common.cli_types import SEED, WORKERS, WritableFolder
 from symbench.core.data.presets import PRESETS
 
 console = Console()
@@ -24,15 +24,28 @@ def _print_failures(failures: list[dict], shown: int = 10) -> None:
     for failure in failures[:shown]:
         console.print(f"  [yellow]failed[/] #{failure['id']}: {failure['failure']}")
     if len(failures) > shown:
-        console.print(f"  ... and {len(failures) - shown} more (`symbench data info ID --json` lists all)")
+        console.print(
+            f"  ... and {len(failures) - shown} more (`symbench data info ID --json` lists all)"
+        )
 
 
 @data.command("generate")
 @click.option("--robot", required=True, help="Registered robot, e.g. hexa.")
-@click.option("--preset", "preset_name", default="small", show_default=True,
-              type=click.Choice(list(PRESETS)), help="Scenario grid size.")
-@click.option("--workers", default=2, show_default=True, type=WORKERS,
-              help="Worker processes at once, each simulating one trajectory.")
+@click.option(
+    "--preset",
+    "preset_name",
+    default="small",
+    show_default=True,
+    type=click.Choice(list(PRESETS)),
+    help="Scenario grid size.",
+)
+@click.option(
+    "--workers",
+    default=2,
+    show_default=True,
+    type=WORKERS,
+    help="Worker processes at once, each simulating one trajectory.",
+)
 @click.option("--progress/--no-progress", default=True, show_default=True)
 def generate_command(robot: str, preset_name: str, workers: int, progress: bool) -> None:
     """Simulate a preset's scenario grid; resumes an interrupted run."""
@@ -41,9 +54,11 @@ def generate_command(robot: str, preset_name: str, workers: int, progress: bool)
     report = generate(robot, preset_name, workers, show_progress=progress)
     kept = report.n_trajectories + report.n_failed - report.n_simulated
     console.print(f"dataset [bold]{report.dataset_id}[/] at {report.root}")
-    console.print(f"  {report.n_trajectories} trajectories, {report.n_samples} samples; "
-                  f"{report.n_failed} failed (robot detached, left out); "
-                  f"{report.n_simulated} simulated in {report.seconds:.1f} s, {kept} kept")
+    console.print(
+        f"  {report.n_trajectories} trajectories, {report.n_samples} samples; "
+        f"{report.n_failed} failed (robot detached, left out); "
+        f"{report.n_simulated} simulated in {report.seconds:.1f} s, {kept} kept"
+    )
     _print_failures(report.failures)
     console.print(f"  content hash {report.content_hash}")
     _print_reference(report.dataset_id, report.content_hash)
@@ -60,8 +75,11 @@ def _print_reference(dataset_id: str, content_hash: str) -> None:
     elif expected == content_hash:
         console.print("  matches the reference hash committed with symbench")
     else:
-        console.print(f"  [yellow]warning:[/] the reference hash committed with symbench is "
-                      f"{expected}: this machine generated different data", soft_wrap=True)
+        console.print(
+            f"  [yellow]warning:[/] the reference hash committed with symbench is "
+            f"{expected}: this machine generated different data",
+            soft_wrap=True,
+        )
 
 
 @data.command("info")
@@ -77,9 +95,11 @@ def info_command(dataset_id: str, seed: int, as_json: bool) -> None:
     if as_json:
         click.echo(json.dumps(info, indent=2))
         return
-    console.print(f"[bold]{info['id']}[/] ({info['source']}, robot {info['robot']}): "
-                  f"{info['trajectories']} trajectories, {info['samples']} samples, "
-                  f"{info['failed']} failed, {info['size_bytes'] / 1e6:.2f} MB")
+    console.print(
+        f"[bold]{info['id']}[/] ({info['source']}, robot {info['robot']}): "
+        f"{info['trajectories']} trajectories, {info['samples']} samples, "
+        f"{info['failed']} failed, {info['size_bytes'] / 1e6:.2f} MB"
+    )
     console.print(f"content hash {info['content_hash']}")
     _print_failures(info["failures"])
     table = Table(title=f"splits (seed {seed}): trajectories / samples")
@@ -89,7 +109,10 @@ def info_command(dataset_id: str, seed: int, as_json: bool) -> None:
         if "error" in counts:
             table.add_row(name, f"[red]{counts['error']}[/]", "", "", "")
             continue
-        cells = [f"{counts[p]['trajectories']} / {counts[p]['samples']}" for p in ("train", "val", "test")]
+        cells = [
+            f"{counts[p]['trajectories']} / {counts[p]['samples']}"
+            for p in ("train", "val", "test")
+        ]
         table.add_row(name, *cells, "yes" if counts["disjoint"] else "[red]NO[/]")
     console.print(table)
 
@@ -103,15 +126,18 @@ def import_command(folder: Path, dataset_id: str | None, force: bool) -> None:
     from symbench.core.data.importer import import_logs
 
     ds = import_logs(folder, dataset_id or folder.resolve().name, force)
-    console.print(f"imported {len(ds.trajectory_ids)} trajectories ({int(ds.n_samples.sum())} "
-                  f"samples) as [bold]{ds.id}[/]; content hash {ds.content_hash}")
+    console.print(
+        f"imported {len(ds.trajectory_ids)} trajectories ({int(ds.n_samples.sum())} "
+        f"samples) as [bold]{ds.id}[/]; content hash {ds.content_hash}"
+    )
 
 
 @data.command("export")
 @click.argument("dataset_id")
 @click.argument("folder", type=WritableFolder())
-@click.option("--format", "fmt", default="parquet", show_default=True,
-              type=click.Choice(["parquet", "npz"]))
+@click.option(
+    "--format", "fmt", default="parquet", show_default=True, type=click.Choice(["parquet", "npz"])
+)
 def export_command(dataset_id: str, folder: Path, fmt: str) -> None:
     """Write a cached dataset in the import format (for other tools, or to re-import)."""
     from symbench.core.data.dataset import load_dataset

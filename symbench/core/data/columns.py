@@ -12,9 +12,9 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from symbench.core.errors import SymbenchError
-from symbench.core.raw import RAW_COLUMNS, RawColumn, column_shape
-from symbench.core.schema import JOINTS
+from symbench.core.common.errors import SymbenchError
+from symbench.core.data.schema import JOINTS
+from symbench.core.sim.raw import RAW_COLUMNS, RawColumn, column_shape
 
 FLAGS = ("contact", "magnet")
 _COMPONENTS = {"3": ("x", "y", "z"), "4": ("w", "x", "y", "z")}

@@ -1,8 +1,8 @@
 """Loading a cached dataset: verified files, raw trajectories, views and splits.
 
-    ds = load_dataset("hexa-climb-small-v4")
-    split = ds.split_indices("unseen-rotation", seed=0)      # trajectory ids
-    train, val, test = ds.split_views("leg_grouped", "acc", "unseen-rotation", seed=0)
+ds = load_dataset("hexa-climb-small-v4")
+split = ds.split_indices("unseen-rotation", seed=0)      # trajectory ids
+train, val, test = ds.split_views("leg_grouped", "acc", "unseen-rotation", seed=0)
 """
 
 from __future__ import annotations
@@ -14,14 +14,14 @@ from typing import Any
 
 import numpy as np
 
-from symbench.core.arrays import ViewArrays
+from symbench.core.common.arrays import ViewArrays
+from symbench.core.common.errors import SymbenchError
 from symbench.core.data.frames import LegFrames
 from symbench.core.data.metadata import read_metadata, verify
 from symbench.core.data.presets import parse_dataset_id
+from symbench.core.data.splits import SplitContext, SplitIndices, resolve
 from symbench.core.data.storage import read_trajectory
 from symbench.core.data.views import build_view
-from symbench.core.errors import SymbenchError
-from symbench.core.splits import SplitContext, SplitIndices, resolve
 
 
 @dataclass
@@ -60,16 +60,18 @@ class Dataset:
 
     @cached_property
     def spec(self):
-        from symbench.core.robots import load_robot
+        from symbench.core.robot.specs import load_robot
 
         try:
             spec = load_robot(self.robot)
         except SymbenchError as exc:
             raise SymbenchError(f"dataset '{self.id}': {exc}") from None
         if spec.spec_hash() != self.metadata["robot_spec_hash"] or spec.n_legs != self.n_legs:
-            raise SymbenchError(f"dataset '{self.id}' was made with another version of robot "
-                                f"'{self.robot}' (its robot.toml changed since); rebuild it with: "
-                                f"{self.metadata['repair_command']}")
+            raise SymbenchError(
+                f"dataset '{self.id}' was made with another version of robot "
+                f"'{self.robot}' (its robot.toml changed since); rebuild it with: "
+                f"{self.metadata['repair_command']}"
+            )
         return spec
 
     @property
@@ -79,8 +81,10 @@ class Dataset:
     def raw(self) -> tuple[dict[str, np.ndarray], np.ndarray]:
         """All raw columns stacked over trajectories, and the trajectory id of each row."""
         if self._raw is None:
-            parts = [read_trajectory(self.root / rec["file"], self.n_legs)
-                     for rec in self.metadata["trajectories"]]
+            parts = [
+                read_trajectory(self.root / rec["file"], self.n_legs)
+                for rec in self.metadata["trajectories"]
+            ]
             raw = {k: np.concatenate([p[k] for p in parts]) for k in parts[0]}
             ids = np.repeat(self.trajectory_ids, [len(p["t"]) for p in parts])
             self._raw = (raw, ids)
@@ -92,20 +96,29 @@ class Dataset:
         return build_view(raw, ids, self.frames, view, variant)
 
     def split_context(self, seed: int) -> SplitContext:
-        return SplitContext(self.id, self.trajectory_ids, self.scenarios, self.n_samples,
-                            self.spec.group.rotation_order, int(seed))
+        return SplitContext(
+            self.id,
+            self.trajectory_ids,
+            self.scenarios,
+            self.n_samples,
+            self.spec.group.rotation_order,
+            int(seed),
+        )
 
     def split_indices(self, split: str, seed: int = 0) -> SplitIndices:
         """Train, validation and test trajectory ids of a registered split."""
         return resolve(split, self.split_context(seed))
 
-    def split_views(self, view: str, variant: str, split: str, seed: int = 0
-                    ) -> tuple[ViewArrays, ViewArrays, ViewArrays]:
+    def split_views(
+        self, view: str, variant: str, split: str, seed: int = 0
+    ) -> tuple[ViewArrays, ViewArrays, ViewArrays]:
         """(train, val, test) samples of `view` under `split`."""
         arrays = self.view(view, variant)
         parts = self.split_indices(split, seed)
-        return tuple(arrays.take(np.isin(arrays.trajectory, ids))  # type: ignore[return-value]
-                     for ids in (parts.train, parts.val, parts.test))
+        return tuple(
+            arrays.take(np.isin(arrays.trajectory, ids))  # type: ignore[return-value]
+            for ids in (parts.train, parts.val, parts.test)
+        )
 
 
 def missing_hint(dataset_id: str) -> str:
@@ -121,6 +134,7 @@ def load_dataset(dataset_id: str, verify_files: bool = True) -> Dataset:
     if verify_files:
         verify(root, meta)
     if not meta["trajectories"]:
-        raise SymbenchError(f"dataset '{dataset_id}' has no trajectories "
-                            f"({len(meta['failures'])} failed)")
+        raise SymbenchError(
+            f"dataset '{dataset_id}' has no trajectories ({len(meta['failures'])} failed)"
+        )
     return Dataset(dataset_id, root, meta)

@@ -34,7 +34,7 @@ import types
 from collections.abc import Iterator
 from contextlib import contextmanager
 
-from symbench.core.errors import SymbenchError
+from symbench.core.common.errors import SymbenchError
 
 PORTABLE = "proxsuite.proxsuite_pywrap"
 OPENBLAS_CORE = "Nehalem"  # SSE4.2, no FMA: part of numpy's x86-64-v2 baseline
@@ -82,15 +82,17 @@ def numerics_problems() -> list[str]:
     from numpy._core._multiarray_umath import __cpu_features__
     from threadpoolctl import threadpool_info
 
-    problems = [f"numpy dispatches {f} loops" for f in _numpy_dispatch_targets()
-                if __cpu_features__.get(f)]
+    problems = [
+        f"numpy dispatches {f} loops" for f in _numpy_dispatch_targets() if __cpu_features__.get(f)
+    ]
     for lib in threadpool_info():
         if lib.get("internal_api") != "openblas":
             continue
         core = str(lib.get("architecture", ""))
         if core.lower() != OPENBLAS_CORE.lower():
-            problems.append(f"OpenBLAS {lib['filepath']} runs {core or 'unknown'} kernels, "
-                            f"not {OPENBLAS_CORE}")
+            problems.append(
+                f"OpenBLAS {lib['filepath']} runs {core or 'unknown'} kernels, not {OPENBLAS_CORE}"
+            )
         if lib.get("num_threads") != 1:
             problems.append(f"OpenBLAS {lib['filepath']} uses {lib.get('num_threads')} threads")
     pins = pinned_environment()
@@ -107,9 +109,12 @@ def require_pinned_numerics() -> None:
     pin_portable_qp_build()
     problems = numerics_problems()
     if problems:
-        raise SymbenchError("refusing to generate data with CPU-dependent numerics ("
-                            + "; ".join(problems) + "): standard datasets are simulated in "
-                            "worker processes that symbench.core.data.generation starts pinned")
+        raise SymbenchError(
+            "refusing to generate data with CPU-dependent numerics ("
+            + "; ".join(problems)
+            + "): standard datasets are simulated in "
+            "worker processes that symbench.core.data.generation starts pinned"
+        )
 
 
 def pin_portable_qp_build() -> None:

@@ -18,19 +18,22 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from symbench.core.common.errors import SymbenchError
+from symbench.core.common.jsonfile import read_json
+from symbench.core.common.processes import run_each
 from symbench.core.data.columns import check_flags
 from symbench.core.data.dataset import Dataset, load_dataset
-from symbench.core.data.determinism import (numerics_problems, pinned_worker_environment,
-                                            require_pinned_numerics)
+from symbench.core.data.determinism import (
+    numerics_problems,
+    pinned_worker_environment,
+    require_pinned_numerics,
+)
 from symbench.core.data.metadata import METADATA, dataset_dir, library_versions, write_metadata
 from symbench.core.data.presets import RECORD_PERIOD, dataset_id, preset
 from symbench.core.data.storage import atomic_write_json, sha256_file, write_trajectory
-from symbench.core.errors import SymbenchError
-from symbench.core.jsonfile import read_json
-from symbench.core.processes import run_each
-from symbench.core.raw import SCHEMA_VERSION, validate_raw
-from symbench.core.robots import load_robot
-from symbench.core.scenario import Scenario
+from symbench.core.robot.specs import load_robot
+from symbench.core.sim.raw import SCHEMA_VERSION, validate_raw
+from symbench.core.sim.scenario import Scenario
 
 Simulator = Callable[..., Any]  # (scenario, record_period=...) -> Rollout
 
@@ -62,16 +65,20 @@ def default_simulator() -> Simulator:
     try:
         from symbench.core.sim.rollout import simulate
     except ImportError as exc:
-        raise SymbenchError(f"the simulator is not available ({exc}); "
-                            "symbench.core.sim.rollout.simulate is needed to generate data") from None
+        raise SymbenchError(
+            f"the simulator is not available ({exc}); "
+            "symbench.core.sim.rollout.simulate is needed to generate data"
+        ) from None
     return simulate
 
 
 def _is_real_simulator(sim: Simulator) -> bool:
     """Only the real simulator needs pinned numerics (named, not imported, so that asking
     does not load proxsuite); tests' stand-ins run anywhere."""
-    return f"{getattr(sim, '__module__', '')}.{getattr(sim, '__qualname__', '')}" == \
-        "symbench.core.sim.rollout.simulate"
+    return (
+        f"{getattr(sim, '__module__', '')}.{getattr(sim, '__qualname__', '')}"
+        == "symbench.core.sim.rollout.simulate"
+    )
 
 
 def record_path(root: Path, index: int) -> Path:
@@ -88,8 +95,9 @@ def run_task(task: Task) -> dict[str, Any]:
         require_pinned_numerics()
     record: dict[str, Any] = {"id": task.index, "scenario": task.scenario, "key": task.key}
     try:
-        rollout = task.simulator(Scenario.from_dict(task.scenario),
-                                 record_period=task.key["record_period_s"])
+        rollout = task.simulator(
+            Scenario.from_dict(task.scenario), record_period=task.key["record_period_s"]
+        )
     except SymbenchError as exc:  # e.g. the controller found no feasible torques
         rollout = None
         record.update(status="failed", failure=f"simulation stopped: {exc}")
@@ -116,8 +124,12 @@ def finished_record(task: Task) -> dict[str, Any] | None:
         record = read_json(path, "generation record")
     except SymbenchError:
         return None
-    if (not isinstance(record, dict) or record.get("id") != task.index
-            or record.get("scenario") != task.scenario or record.get("key") != task.key):
+    if (
+        not isinstance(record, dict)
+        or record.get("id") != task.index
+        or record.get("scenario") != task.scenario
+        or record.get("key") != task.key
+    ):
         return None
     if record.get("status") == "ok":
         file_named = record.get("file") == trajectory_file(task.index)
@@ -131,8 +143,9 @@ def finished_record(task: Task) -> dict[str, Any] | None:
     return record
 
 
-def _run_all(tasks: Sequence[Task], workers: int, on_done: Callable[[dict], None],
-             in_process: bool) -> None:
+def _run_all(
+    tasks: Sequence[Task], workers: int, on_done: Callable[[dict], None], in_process: bool
+) -> None:
     if in_process:
         for task in tasks:
             on_done(run_task(task))
@@ -140,10 +153,15 @@ def _run_all(tasks: Sequence[Task], workers: int, on_done: Callable[[dict], None
     run_each(run_task, tasks, workers, on_done, environment=pinned_worker_environment)
 
 
-def generate(robot: str, preset_name: str = "small", workers: int = 1,
-             simulator: Simulator | None = None, show_progress: bool = True,
-             scenarios: Sequence[Scenario] | None = None,
-             id_override: str | None = None) -> GenerationReport:
+def generate(
+    robot: str,
+    preset_name: str = "small",
+    workers: int = 1,
+    simulator: Simulator | None = None,
+    show_progress: bool = True,
+    scenarios: Sequence[Scenario] | None = None,
+    id_override: str | None = None,
+) -> GenerationReport:
     """Generate (or resume) the dataset of `preset_name` for `robot` in the cache.
 
     `scenarios` and `id_override` replace the preset's grid and id (tests use tiny grids).
@@ -155,10 +173,16 @@ def generate(robot: str, preset_name: str = "small", workers: int = 1,
     grid = preset(preset_name)
     did = id_override or dataset_id(robot, preset_name)
     order = spec.group.rotation_order
-    scenarios = list(scenarios) if scenarios is not None else grid.scenarios(robot, spec.n_legs, order)
+    scenarios = (
+        list(scenarios) if scenarios is not None else grid.scenarios(robot, spec.n_legs, order)
+    )
     root = dataset_dir(did)
-    key = {"raw_schema_version": SCHEMA_VERSION, "robot_spec_hash": spec.spec_hash(),
-           "record_period_s": RECORD_PERIOD, "versions": library_versions()}
+    key = {
+        "raw_schema_version": SCHEMA_VERSION,
+        "robot_spec_hash": spec.spec_hash(),
+        "record_period_s": RECORD_PERIOD,
+        "versions": library_versions(),
+    }
     sim = simulator or default_simulator()
     # the real simulator runs in this process only if its numerics here are pinned
     in_process = workers <= 1 and (not _is_real_simulator(sim) or not numerics_problems())
@@ -172,6 +196,7 @@ def generate(robot: str, preset_name: str = "small", workers: int = 1,
     start = time.perf_counter()
     failed_before = sum(r["status"] != "ok" for r in records.values())
     with ProgressBar(show_progress, len(tasks), len(records), failed_before, did) as advance:
+
         def on_done(rec: dict[str, Any]) -> None:
             records[rec["id"]] = rec
             advance(rec)
@@ -181,38 +206,80 @@ def generate(robot: str, preset_name: str = "small", workers: int = 1,
         except KeyboardInterrupt:
             # counted on disk: work the pool finished while shutting down is not in `records`
             done = sum(finished_record(task) is not None for task in tasks)
-            raise SymbenchError(f"interrupted with {done} of {len(tasks)} trajectories "
-                                "done; run the same command again to resume") from None
+            raise SymbenchError(
+                f"interrupted with {done} of {len(tasks)} trajectories "
+                "done; run the same command again to resume"
+            ) from None
         except BrokenProcessPool as exc:
-            raise SymbenchError(f"a worker process died ({exc}) with {len(records)} of "
-                                f"{len(tasks)} trajectories done; run again to resume (a script "
-                                "that calls generate() needs an "
-                                "`if __name__ == '__main__':` guard)") from None
+            raise SymbenchError(
+                f"a worker process died ({exc}) with {len(records)} of "
+                f"{len(tasks)} trajectories done; run again to resume (a script "
+                "that calls generate() needs an "
+                "`if __name__ == '__main__':` guard)"
+            ) from None
     seconds = time.perf_counter() - start
     grid_doc = grid.grid(order) if id_override is None else {"scenarios": len(tasks)}
-    meta = _write_dataset(root, did, robot, preset_name, spec.n_legs, key, grid_doc,
-                          [records[i] for i in range(len(tasks))])
-    return GenerationReport(did, root, len(meta["trajectories"]), len(meta["failures"]),
-                            meta["n_samples"], len(todo), seconds, meta["content_hash"],
-                            meta["failures"])
+    meta = _write_dataset(
+        root,
+        did,
+        robot,
+        preset_name,
+        spec.n_legs,
+        key,
+        grid_doc,
+        [records[i] for i in range(len(tasks))],
+    )
+    return GenerationReport(
+        did,
+        root,
+        len(meta["trajectories"]),
+        len(meta["failures"]),
+        meta["n_samples"],
+        len(todo),
+        seconds,
+        meta["content_hash"],
+        meta["failures"],
+    )
 
 
-def _write_dataset(root: Path, did: str, robot: str, preset_name: str, n_legs: int,
-                   key: dict[str, Any], grid_doc: dict[str, Any],
-                   records: list[dict[str, Any]]) -> dict[str, Any]:
+def _write_dataset(
+    root: Path,
+    did: str,
+    robot: str,
+    preset_name: str,
+    n_legs: int,
+    key: dict[str, Any],
+    grid_doc: dict[str, Any],
+    records: list[dict[str, Any]],
+) -> dict[str, Any]:
     """metadata.json from the records in grid order: kept trajectories, then failures."""
-    ok = [{k: r[k] for k in ("id", "file", "sha256", "n_steps", "scenario")}
-          for r in records if r["status"] == "ok"]
-    failures = [{k: r[k] for k in ("id", "scenario", "failure")}
-                for r in records if r["status"] != "ok"]
-    return write_metadata(root, {
-        "id": did, "source": "generated", "robot": robot, "n_legs": n_legs,
-        "robot_spec_hash": key["robot_spec_hash"], "raw_schema_version": SCHEMA_VERSION,
-        "record_period_s": RECORD_PERIOD, "versions": key["versions"], "preset": preset_name,
-        "scenario_grid": grid_doc, "trajectories": ok, "failures": failures,
-        "n_samples": sum(r["n_steps"] - 1 for r in ok),
-        "repair_command": f"symbench data generate --robot {robot} --preset {preset_name}",
-    })
+    ok = [
+        {k: r[k] for k in ("id", "file", "sha256", "n_steps", "scenario")}
+        for r in records
+        if r["status"] == "ok"
+    ]
+    failures = [
+        {k: r[k] for k in ("id", "scenario", "failure")} for r in records if r["status"] != "ok"
+    ]
+    return write_metadata(
+        root,
+        {
+            "id": did,
+            "source": "generated",
+            "robot": robot,
+            "n_legs": n_legs,
+            "robot_spec_hash": key["robot_spec_hash"],
+            "raw_schema_version": SCHEMA_VERSION,
+            "record_period_s": RECORD_PERIOD,
+            "versions": key["versions"],
+            "preset": preset_name,
+            "scenario_grid": grid_doc,
+            "trajectories": ok,
+            "failures": failures,
+            "n_samples": sum(r["n_steps"] - 1 for r in ok),
+            "repair_command": f"symbench data generate --robot {robot} --preset {preset_name}",
+        },
+    )
 
 
 class ProgressBar:
@@ -225,11 +292,22 @@ class ProgressBar:
     def __enter__(self) -> Callable[[dict], None]:
         if not self.show:
             return lambda rec: None
-        from rich.progress import (BarColumn, MofNCompleteColumn, Progress, TextColumn,
-                                   TimeElapsedColumn, TimeRemainingColumn)
+        from rich.progress import (
+            BarColumn,
+            MofNCompleteColumn,
+            Progress,
+            TextColumn,
+            TimeElapsedColumn,
+            TimeRemainingColumn,
+        )
 
-        self.bar = Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(),
-                            TimeElapsedColumn(), TimeRemainingColumn())
+        self.bar = Progress(
+            TextColumn("{task.description}"),
+            BarColumn(),
+            MofNCompleteColumn(),
+            TimeElapsedColumn(),
+            TimeRemainingColumn(),
+        )
         self.bar.start()
         self.task = self.bar.add_task(self.label, total=self.total, completed=self.done)
         return self.advance
@@ -244,8 +322,9 @@ class ProgressBar:
             self.bar.stop()
 
 
-def ensure_dataset(robot: str, preset_name: str = "small", workers: int = 2,
-                   show_progress: bool = True) -> Dataset:
+def ensure_dataset(
+    robot: str, preset_name: str = "small", workers: int = 2, show_progress: bool = True
+) -> Dataset:
     """The preset's dataset, generated first when it is missing or its robot spec changed."""
     did = dataset_id(robot, preset_name)
     if (dataset_dir(did) / METADATA).is_file():

@@ -10,10 +10,10 @@ from typing import Annotated
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
+from symbench.core.common.errors import SymbenchError
+from symbench.core.common.jsonfile import read_json
+from symbench.core.common.validation import explain
 from symbench.core.data.scenario_fields import ScenarioFields
-from symbench.core.errors import SymbenchError
-from symbench.core.jsonfile import read_json
-from symbench.core.validation import explain
 
 IMPORT_JSON = "import.json"
 SUFFIXES = (".parquet", ".npz")
@@ -39,15 +39,19 @@ def read_manifest(folder: Path) -> tuple[ImportManifest, list[TrajectoryFile]]:
     folder, in name order, when it lists none)."""
     path = folder / IMPORT_JSON
     if not path.is_file():
-        raise SymbenchError(f"{folder} has no {IMPORT_JSON} naming the robot and the record "
-                            "period (see 'Importing a real robot's logs' in the README)")
+        raise SymbenchError(
+            f"{folder} has no {IMPORT_JSON} naming the robot and the record "
+            "period (see 'Importing a real robot's logs' in the README)"
+        )
     try:
         manifest = ImportManifest.model_validate(read_json(path, "import"))
     except ValidationError as exc:
         raise explain(exc, str(path)) from None
     entries = manifest.trajectories
     if entries is None:
-        entries = [TrajectoryFile(file=p.name) for p in sorted(folder.iterdir()) if p.suffix in SUFFIXES]
+        entries = [
+            TrajectoryFile(file=p.name) for p in sorted(folder.iterdir()) if p.suffix in SUFFIXES
+        ]
     if not entries:
         raise SymbenchError(f"{folder}: no *.parquet or *.npz trajectory files")
     seen: dict[Path, str] = {}
@@ -58,8 +62,9 @@ def read_manifest(folder: Path) -> tuple[ImportManifest, list[TrajectoryFile]]:
         if not resolved.is_relative_to(folder.resolve()):
             raise SymbenchError(f"{path}: {entry.file} is not inside {folder}")
         if resolved in seen:
-            raise SymbenchError(f"{path}: {entry.file} is listed twice (also as {seen[resolved]}); "
-                                "a trajectory imported twice can land in training and test at once")
+            raise SymbenchError(
+                f"{path}: {entry.file} is listed twice (also as {seen[resolved]}); "
+                "a trajectory imported twice can land in training and test at once"
+            )
         seen[resolved] = entry.file
     return manifest, entries
-

@@ -7,7 +7,7 @@ An import folder holds one Parquet or npz file per trajectory and `import.json`:
 
 Parquet files carry one scalar column per component (`t`, `base_quat.w`, `q.leg0.coxa`,
 `contact.leg0`, ... see symbench.core.data.columns); npz files carry one array per raw
-column shaped (T, ...) as in symbench/core/raw.py. `trajectories` may be left out: then
+column shaped (T, ...) as in symbench/core/sim/raw.py. `trajectories` may be left out: then
 every *.parquet and *.npz file of the folder is imported, in name order. Every file is
 checked (columns, lengths, leg count, NaN, values beyond float32, flags, sampling period)
 before anything is written, and the imported dataset is stored exactly like a generated one:
@@ -25,17 +25,21 @@ from pathlib import Path
 
 import numpy as np
 
-from symbench.core.atomic import replace_folder, staging_folder, write_bytes_atomic
+from symbench.core.common.atomic import replace_folder, staging_folder, write_bytes_atomic
+from symbench.core.common.errors import SymbenchError
+from symbench.core.common.jsonfile import one_line
 from symbench.core.data.columns import check_flags, legs_in, unflatten
 from symbench.core.data.dataset import Dataset, load_dataset
 from symbench.core.data.import_manifest import IMPORT_JSON, read_manifest
 from symbench.core.data.metadata import METADATA, dataset_dir, library_versions, write_metadata
 from symbench.core.data.scenario_fields import SCENARIO_KEYS
-from symbench.core.data.storage import (atomic_write_json, read_columns, read_trajectory,
-                                        write_trajectory)
-from symbench.core.errors import SymbenchError
-from symbench.core.jsonfile import one_line
-from symbench.core.raw import COLUMN_NAMES, SCHEMA_VERSION, validate_raw
+from symbench.core.data.storage import (
+    atomic_write_json,
+    read_columns,
+    read_trajectory,
+    write_trajectory,
+)
+from symbench.core.sim.raw import COLUMN_NAMES, SCHEMA_VERSION, validate_raw
 
 PERIOD_TOLERANCE = 0.05  # relative deviation of any time step from record_period_s
 LARGEST = float(np.finfo(np.float32).max)  # models compute in float32
@@ -47,27 +51,34 @@ def _read_file(path: Path, n_legs: int, robot: str) -> dict[str, np.ndarray]:
         columns = read_columns(path)
         found = legs_in(list(columns))
         if found and found != n_legs:
-            raise SymbenchError(f"{path}: has columns for {found} legs, robot '{robot}' has {n_legs}")
+            raise SymbenchError(
+                f"{path}: has columns for {found} legs, robot '{robot}' has {n_legs}"
+            )
         return unflatten(columns, n_legs, str(path))
     try:
         with np.load(path, allow_pickle=False) as npz:
             arrays = {k: npz[k] for k in npz.files}
     except (OSError, ValueError, EOFError, zipfile.BadZipFile, zlib.error) as exc:
-        raise SymbenchError(f"{path}: not a readable npz file without pickles "
-                            f"({one_line(exc) or type(exc).__name__})") from None
+        raise SymbenchError(
+            f"{path}: not a readable npz file without pickles "
+            f"({one_line(exc) or type(exc).__name__})"
+        ) from None
     missing = [c for c in COLUMN_NAMES if c not in arrays]
     if missing:
         raise SymbenchError(f"{path}: missing column(s) {', '.join(missing)}")
     q = arrays["q"]
     if q.ndim == 3 and q.shape[1] != n_legs:
         raise SymbenchError(f"{path}: 'q' has {q.shape[1]} legs, robot '{robot}' has {n_legs}")
+
     def steps(a: np.ndarray) -> str:
         return f"{np.shape(a)[0]} steps" if np.ndim(a) else "no time axis"
 
     for name in COLUMN_NAMES:
         if np.shape(arrays[name])[:1] != np.shape(arrays["t"])[:1]:
-            raise SymbenchError(f"{path}: column '{name}' has {steps(arrays[name])} (shape "
-                                f"{np.shape(arrays[name])}), 't' has {steps(arrays['t'])}")
+            raise SymbenchError(
+                f"{path}: column '{name}' has {steps(arrays[name])} (shape "
+                f"{np.shape(arrays[name])}), 't' has {steps(arrays['t'])}"
+            )
     return arrays
 
 
@@ -78,8 +89,9 @@ def _numeric(arrays: dict[str, np.ndarray], source: str) -> dict[str, np.ndarray
         try:
             out[name] = np.asarray(arrays[name], dtype=np.float64)
         except (TypeError, ValueError):
-            raise SymbenchError(f"{source}: column '{name}' is not numeric "
-                                f"({np.asarray(arrays[name]).dtype})") from None
+            raise SymbenchError(
+                f"{source}: column '{name}' is not numeric ({np.asarray(arrays[name]).dtype})"
+            ) from None
     return out
 
 
@@ -94,27 +106,33 @@ def check_trajectory(arrays: dict[str, np.ndarray], n_legs: int, period: float, 
         huge = np.abs(per_step) > LARGEST
         if huge.any():
             step, column = np.argwhere(huge)[0]
-            raise SymbenchError(f"{source}: column '{name}' holds {per_step[step, column]:g} at step "
-                                f"{step}, beyond float32 (±{LARGEST:.3g}), in which models compute")
+            raise SymbenchError(
+                f"{source}: column '{name}' holds {per_step[step, column]:g} at step "
+                f"{step}, beyond float32 (±{LARGEST:.3g}), in which models compute"
+            )
     check_flags(arrays, source)
     dt = np.diff(np.asarray(arrays["t"], np.float64))
     if np.abs(dt - period).max() > PERIOD_TOLERANCE * period:
-        raise SymbenchError(f"{source}: time steps range {dt.min():.6g}..{dt.max():.6g} s, but "
-                            f"{IMPORT_JSON} says record_period_s = {period:g}")
+        raise SymbenchError(
+            f"{source}: time steps range {dt.min():.6g}..{dt.max():.6g} s, but "
+            f"{IMPORT_JSON} says record_period_s = {period:g}"
+        )
     return n
 
 
 def import_logs(folder: Path, dataset_id: str, force: bool = False) -> Dataset:
     """Check every file of `folder`, then store them as dataset `dataset_id` (a folder without
     metadata.json there is an unfinished import or generation, and is replaced)."""
-    from symbench.core.robots import load_robot
+    from symbench.core.robot.specs import load_robot
 
     folder = Path(folder).resolve()
     manifest, entries = read_manifest(folder)
     robot = load_robot(manifest.robot)
     root = dataset_dir(dataset_id)
     if (root / METADATA).is_file() and not force:
-        raise SymbenchError(f"dataset '{dataset_id}' already exists ({root}); pass --force to replace it")
+        raise SymbenchError(
+            f"dataset '{dataset_id}' already exists ({root}); pass --force to replace it"
+        )
     loaded = []
     for entry in entries:
         path = folder / entry.file
@@ -129,16 +147,34 @@ def import_logs(folder: Path, dataset_id: str, force: bool = False) -> Dataset:
         for i, (arrays, n, scenario, source) in enumerate(loaded):
             file = f"trajectories/{i:05d}.parquet"
             sha = write_trajectory(staging / file, arrays, robot.n_legs)
-            records.append({"id": i, "file": file, "sha256": sha, "n_steps": n,
-                            "scenario": scenario, "source_file": source})
-        write_metadata(staging, {
-            "id": dataset_id, "source": "imported", "imported_from": str(folder),
-            "robot": robot.name, "n_legs": robot.n_legs, "robot_spec_hash": robot.spec_hash(),
-            "raw_schema_version": SCHEMA_VERSION, "record_period_s": manifest.record_period_s,
-            "versions": library_versions(), "trajectories": records, "failures": [],
-            "n_samples": sum(n - 1 for _, n, _, _ in loaded),
-            "repair_command": f"symbench data import {folder} --id {dataset_id} --force",
-        })
+            records.append(
+                {
+                    "id": i,
+                    "file": file,
+                    "sha256": sha,
+                    "n_steps": n,
+                    "scenario": scenario,
+                    "source_file": source,
+                }
+            )
+        write_metadata(
+            staging,
+            {
+                "id": dataset_id,
+                "source": "imported",
+                "imported_from": str(folder),
+                "robot": robot.name,
+                "n_legs": robot.n_legs,
+                "robot_spec_hash": robot.spec_hash(),
+                "raw_schema_version": SCHEMA_VERSION,
+                "record_period_s": manifest.record_period_s,
+                "versions": library_versions(),
+                "trajectories": records,
+                "failures": [],
+                "n_samples": sum(n - 1 for _, n, _, _ in loaded),
+                "repair_command": f"symbench data import {folder} --id {dataset_id} --force",
+            },
+        )
         replace_folder(staging, root)
     finally:
         shutil.rmtree(staging, ignore_errors=True)  # gone already when the import succeeded
@@ -160,9 +196,16 @@ def export_dataset(dataset: Dataset, folder: Path, fmt: str = "parquet") -> Path
             buf = io.BytesIO()
             np.savez(buf, **arrays)
             write_bytes_atomic(folder / name, buf.getvalue())
-        scenario = {k: v for k, v in rec["scenario"].items() if k in SCENARIO_KEYS and v is not None}
+        scenario = {
+            k: v for k, v in rec["scenario"].items() if k in SCENARIO_KEYS and v is not None
+        }
         entries.append({"file": name, "scenario": scenario})
-    atomic_write_json(folder / IMPORT_JSON, {
-        "robot": dataset.robot, "record_period_s": dataset.metadata["record_period_s"],
-        "trajectories": entries})
+    atomic_write_json(
+        folder / IMPORT_JSON,
+        {
+            "robot": dataset.robot,
+            "record_period_s": dataset.metadata["record_period_s"],
+            "trajectories": entries,
+        },
+    )
     return folder

@@ -6,9 +6,9 @@ from typing import Any
 
 import numpy as np
 
+from symbench.core.common.errors import SymbenchError
 from symbench.core.data.dataset import Dataset
-from symbench.core.errors import SymbenchError
-from symbench.core.registry import collect
+from symbench.core.plugin.registry import collect
 
 
 def split_counts(ds: Dataset, split: str, seed: int) -> dict[str, Any]:

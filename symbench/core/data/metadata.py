@@ -13,14 +13,19 @@ from typing import Any
 
 from pydantic import ValidationError
 
+from symbench.core.common.errors import SymbenchError
+from symbench.core.common.jsonfile import read_json
+from symbench.core.common.paths import datasets_dir
+from symbench.core.common.validation import explain
 from symbench.core.data.metadata_schema import DatasetMetadata
-from symbench.core.data.storage import (atomic_write_json, canonical_json, sha256_bytes,
-                                        sha256_file, step_count)
-from symbench.core.errors import SymbenchError
-from symbench.core.jsonfile import read_json
-from symbench.core.paths import datasets_dir
-from symbench.core.provenance import package_versions
-from symbench.core.validation import explain
+from symbench.core.data.provenance import package_versions
+from symbench.core.data.storage import (
+    atomic_write_json,
+    canonical_json,
+    sha256_bytes,
+    sha256_file,
+    step_count,
+)
 
 FORMAT = "symbench-dataset"
 FORMAT_VERSION = 1
@@ -60,11 +65,15 @@ def read_metadata(dataset_id: str, missing_hint: str) -> tuple[Path, dict[str, A
     if not isinstance(meta, dict) or meta.get("format") != FORMAT:
         raise SymbenchError(f"{root / METADATA} is not a symbench dataset's metadata")
     if meta.get("format_version") != FORMAT_VERSION:
-        raise SymbenchError(f"dataset '{dataset_id}' has format version {meta.get('format_version')},"
-                            f" this symbench reads {FORMAT_VERSION}; {meta.get('repair_command')}")
+        raise SymbenchError(
+            f"dataset '{dataset_id}' has format version {meta.get('format_version')},"
+            f" this symbench reads {FORMAT_VERSION}; {meta.get('repair_command')}"
+        )
     if meta.get("content_hash") != content_hash(meta):
-        raise SymbenchError(f"dataset '{dataset_id}': metadata.json was edited or damaged "
-                            f"(content hash mismatch); rebuild it with: {meta.get('repair_command')}")
+        raise SymbenchError(
+            f"dataset '{dataset_id}': metadata.json was edited or damaged "
+            f"(content hash mismatch); rebuild it with: {meta.get('repair_command')}"
+        )
     try:
         DatasetMetadata.model_validate(meta)
     except ValidationError as exc:
@@ -88,11 +97,15 @@ def verify(root: Path, meta: dict[str, Any]) -> None:
     bad = damaged_files(root, meta)
     if bad:
         shown = ", ".join(bad[:3]) + (f" and {len(bad) - 3} more" if len(bad) > 3 else "")
-        raise SymbenchError(f"dataset '{meta['id']}': {shown} changed, truncated or missing "
-                            f"(SHA-256 mismatch); fix it with: {meta['repair_command']}")
+        raise SymbenchError(
+            f"dataset '{meta['id']}': {shown} changed, truncated or missing "
+            f"(SHA-256 mismatch); fix it with: {meta['repair_command']}"
+        )
     for rec in meta["trajectories"]:
         steps = step_count(root / rec["file"])
         if steps != rec["n_steps"]:
-            raise SymbenchError(f"dataset '{meta['id']}': {rec['file']} holds {steps} steps, "
-                                f"metadata.json says {rec['n_steps']}; fix it with: "
-                                f"{meta['repair_command']}")
+            raise SymbenchError(
+                f"dataset '{meta['id']}': {rec['file']} holds {steps} steps, "
+                f"metadata.json says {rec['n_steps']}; fix it with: "
+                f"{meta['repair_command']}"
+            )

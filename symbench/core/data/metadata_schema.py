@@ -13,7 +13,9 @@ from symbench.core.data.scenario_fields import StoredScenario
 
 Sha256 = Annotated[str, Field(pattern=r"^[0-9a-f]{64}$")]
 # inside the dataset folder: no '..', no absolute path
-TrajectoryFile = Annotated[str, Field(pattern=r"^trajectories/[A-Za-z0-9][A-Za-z0-9_.-]*\.parquet$")]
+TrajectoryFile = Annotated[
+    str, Field(pattern=r"^trajectories/[A-Za-z0-9][A-Za-z0-9_.-]*\.parquet$")
+]
 
 
 class _Strict(BaseModel):

@@ -3,7 +3,8 @@
 A grid is the product of inclinations, slope headings, initial base yaws (evenly covering
 the full circle, a whole number per fundamental sector of the robot's rotation group, so
 that `unseen-rotation` has training data), step directions, leg orders and seeds; its order
-is fixed, so trajectory k of a preset is always the same scenario. Bump DATASET_VERSION whenever a grid or the recorded content changes.
+is fixed, so trajectory k of a preset is always the same scenario. Bump DATASET_VERSION
+whenever a grid or the recorded content changes.
 """
 
 from __future__ import annotations
@@ -13,8 +14,8 @@ import math
 from dataclasses import asdict, dataclass
 from typing import Any
 
-from symbench.core.errors import SymbenchError, UnknownNameError
-from symbench.core.scenario import Scenario
+from symbench.core.common.errors import UnknownNameError
+from symbench.core.sim.scenario import Scenario
 
 # 2: yaws beyond a symmetry step carry the gait along; 3: small grid; 4: simulated with pinned
 # numerics (symbench.core.data.determinism), identical on every x86-64 CPU
@@ -45,12 +46,25 @@ class Preset:
     def scenarios(self, robot: str, n_legs: int, rotation_order: int) -> list[Scenario]:
         """The grid in its fixed order: the index in this list is the trajectory id."""
         orders = {"default": None, "reversed": tuple(range(n_legs - 1, -1, -1))}
-        axes = (self.inclinations_deg, self.headings_deg, self.yaws_deg(rotation_order),
-                self.directions, self.leg_orders, self.seeds)
+        axes = (
+            self.inclinations_deg,
+            self.headings_deg,
+            self.yaws_deg(rotation_order),
+            self.directions,
+            self.leg_orders,
+            self.seeds,
+        )
         return [
-            Scenario(robot=robot, inclination_deg=inc, heading_deg=head, yaw_deg=yaw,
-                     direction=direction, leg_order=orders[order], seed=seed,
-                     seconds=self.seconds)
+            Scenario(
+                robot=robot,
+                inclination_deg=inc,
+                heading_deg=head,
+                yaw_deg=yaw,
+                direction=direction,
+                leg_order=orders[order],
+                seed=seed,
+                seconds=self.seconds,
+            )
             for inc, head, yaw, direction, order, seed in itertools.product(*axes)
         ]
 
@@ -64,20 +78,41 @@ class Preset:
 PRESETS: dict[str, Preset] = {
     p.name: p
     for p in (
-        Preset("smoke", "a few one-second trajectories, for tests (seconds)",
-               inclinations_deg=(90.0,), headings_deg=(0.0, 180.0), yaws_per_turn=0,
-               directions=("forward",), leg_orders=("default",), seeds=(0,), seconds=1.0),
+        Preset(
+            "smoke",
+            "a few one-second trajectories, for tests (seconds)",
+            inclinations_deg=(90.0,),
+            headings_deg=(0.0, 180.0),
+            yaws_per_turn=0,
+            directions=("forward",),
+            leg_orders=("default",),
+            seeds=(0,),
+            seconds=1.0,
+        ),
         # Two headings suffice for the invariance split (on a wall they are exact images);
         # 12 yaws give every robot at least two distinct yaws per symmetry sector.
-        Preset("small", "the default of `symbench run`: minutes on a laptop",
-               inclinations_deg=(90.0,), headings_deg=(0.0, 180.0),
-               yaws_per_turn=12, directions=("forward", "left"), leg_orders=("default",),
-               seeds=(0,), seconds=2.6),
-        Preset("paper", "the full replication: slopes, headings, yaws, gaits and seeds",
-               inclinations_deg=(57.29577951308232, 90.0),
-               headings_deg=(0.0, 90.0, 180.0, 270.0), yaws_per_turn=6,
-               directions=("forward", "backward", "left", "right"), leg_orders=LEG_ORDERS,
-               seeds=(0,), seconds=10.0),
+        Preset(
+            "small",
+            "the default of `symbench run`: minutes on a laptop",
+            inclinations_deg=(90.0,),
+            headings_deg=(0.0, 180.0),
+            yaws_per_turn=12,
+            directions=("forward", "left"),
+            leg_orders=("default",),
+            seeds=(0,),
+            seconds=2.6,
+        ),
+        Preset(
+            "paper",
+            "the full replication: slopes, headings, yaws, gaits and seeds",
+            inclinations_deg=(57.29577951308232, 90.0),
+            headings_deg=(0.0, 90.0, 180.0, 270.0),
+            yaws_per_turn=6,
+            directions=("forward", "backward", "left", "right"),
+            leg_orders=LEG_ORDERS,
+            seeds=(0,),
+            seconds=10.0,
+        ),
     )
 }
 
@@ -100,4 +135,3 @@ def parse_dataset_id(dataset_id_: str) -> tuple[str, str] | None:
     if len(parts) == 4 and parts[1] == "climb" and parts[2] in PRESETS and parts[3].startswith("v"):
         return parts[0], parts[2]
     return None
-

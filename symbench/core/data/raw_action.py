@@ -15,10 +15,10 @@ from collections.abc import Mapping
 import numpy as np
 
 from symbench.core.data.frames import LegFrames, quat_multiply, yaw_matrix, yaw_quat
-from symbench.core import leg_symmetry
-from symbench.core.leg_symmetry import MIRROR_Y
-from symbench.core.groups import GroupElement
-from symbench.core.schema import FeatureType
+from symbench.core.data.schema import FeatureType
+from symbench.core.symmetry import legs as leg_symmetry
+from symbench.core.symmetry.groups import GroupElement
+from symbench.core.symmetry.legs import MIRROR_Y
 
 JOINT_COLUMNS = ("q", "qd", "qdd", "tau")
 FLAG_COLUMNS = ("contact", "magnet")
@@ -30,9 +30,10 @@ def base_map(frames: LegFrames, g: GroupElement, tol: float = 1e-9) -> np.ndarra
     return leg_symmetry.base_map(frames.rotations, frames.origins, g, tol)
 
 
-def act_on_raw(g: GroupElement, raw: Mapping[str, np.ndarray], frames: LegFrames
-               ) -> dict[str, np.ndarray]:
-    """g . raw for raw columns shaped (T, ...) (see symbench.core.raw), float64."""
+def act_on_raw(
+    g: GroupElement, raw: Mapping[str, np.ndarray], frames: LegFrames
+) -> dict[str, np.ndarray]:
+    """g . raw for raw columns shaped (T, ...) (see symbench.core.sim.raw), float64."""
     gb = base_map(frames, g)
     src = g.source_legs()
     out = {k: np.array(v, copy=True) for k, v in raw.items()}
@@ -55,8 +56,9 @@ def act_on_raw(g: GroupElement, raw: Mapping[str, np.ndarray], frames: LegFrames
     return out
 
 
-def rotate_scene_about_gravity(raw: Mapping[str, np.ndarray], angle: float
-                               ) -> dict[str, np.ndarray]:
+def rotate_scene_about_gravity(
+    raw: Mapping[str, np.ndarray], angle: float
+) -> dict[str, np.ndarray]:
     """The same motion with the whole scene turned by `angle` (rad) about world z."""
     rz = yaw_matrix(angle)
     out = {k: np.array(v, copy=True) for k, v in raw.items()}

@@ -12,8 +12,13 @@ DATASET_VERSION, regenerate, and replace the hashes.
 
 from __future__ import annotations
 
-LIBRARY_VERSIONS = {"dm-control": "1.0.50", "mujoco": "3.17.0", "numpy": "2.4.6",
-                    "pyarrow": "26.0.1", "symbench": "0.1.0"}
+LIBRARY_VERSIONS = {
+    "dm-control": "1.0.50",
+    "mujoco": "3.17.0",
+    "numpy": "2.4.6",
+    "pyarrow": "26.0.1",
+    "symbench": "0.1.0",
+}
 
 CONTENT_HASHES = {
     "magneto-climb-smoke-v4": "58eb30292e052784664403dad7a3cd70278f431c1d11be2a0a95851fa98d19e5",

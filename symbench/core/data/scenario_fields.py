@@ -8,13 +8,13 @@ from typing import Annotated, Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
-from symbench.core.scenario import DIRECTIONS
+from symbench.core.sim.scenario import DIRECTIONS
 
 Finite = Annotated[float, Field(allow_inf_nan=False)]
 
 
 class ScenarioFields(BaseModel):
-    """The fields of `symbench.core.scenario.Scenario` but the robot."""
+    """The fields of `symbench.core.sim.scenario.Scenario` but the robot."""
 
     model_config = ConfigDict(extra="forbid", strict=True, frozen=True)
 

@@ -16,9 +16,9 @@ from typing import Any
 
 import numpy as np
 
-from symbench.core.atomic import write_bytes_atomic
+from symbench.core.common.atomic import write_bytes_atomic
+from symbench.core.common.errors import SymbenchError
 from symbench.core.data.columns import flatten, unflatten
-from symbench.core.errors import SymbenchError
 
 
 def canonical_json(obj: Any) -> str:
@@ -50,8 +50,13 @@ def trajectory_bytes(arrays: Mapping[str, np.ndarray], n_legs: int) -> bytes:
     floats = [name for name, a in columns.items() if a.dtype == np.float64]
     buf = io.BytesIO()
     # byte-stream-split floats without dictionaries: 22 % smaller and faster than the defaults
-    pq.write_table(pa.table(columns), buf, compression="zstd", use_dictionary=False,
-                   use_byte_stream_split=floats)
+    pq.write_table(
+        pa.table(columns),
+        buf,
+        compression="zstd",
+        use_dictionary=False,
+        use_byte_stream_split=floats,
+    )
     return buf.getvalue()
 
 

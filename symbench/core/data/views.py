@@ -11,10 +11,10 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from symbench.core import schema
-from symbench.core.arrays import ViewArrays
+from symbench.core.common.arrays import ViewArrays
+from symbench.core.common.errors import SymbenchError, UnknownNameError
+from symbench.core.data import schema
 from symbench.core.data.frames import GRAVITY_WORLD, LegFrames, quat_to_matrix
-from symbench.core.errors import SymbenchError, UnknownNameError
 
 Raw = Mapping[str, np.ndarray]
 
@@ -64,12 +64,20 @@ def leg_grouped(raw: Raw, trajectory: np.ndarray, frames: LegFrames, variant: st
     for flag in ("contact", "magnet"):
         features[flag] = np.asarray(raw[flag], np.float64)[rows][..., None]
     x = np.concatenate([features[name] for name in layout.feature_names], axis=-1)
-    return ViewArrays("leg_grouped", variant, frames.n_legs, {"x": x}, features["tau"],
-                      np.asarray(trajectory)[rows], {"x": layout.column_names})
+    return ViewArrays(
+        "leg_grouped",
+        variant,
+        frames.n_legs,
+        {"x": x},
+        features["tau"],
+        np.asarray(trajectory)[rows],
+        {"x": layout.column_names},
+    )
 
 
-def _flat_columns(raw: Raw, rows: np.ndarray, joints: Mapping[str, np.ndarray],
-                  columns: tuple[str, ...]) -> np.ndarray:
+def _flat_columns(
+    raw: Raw, rows: np.ndarray, joints: Mapping[str, np.ndarray], columns: tuple[str, ...]
+) -> np.ndarray:
     """(N, len(columns)) from names like base_pos.x, base_quat.w, leg2.q.coxa, leg2.contact."""
     out = np.empty((len(rows), len(columns)))
     for k, name in enumerate(columns):
@@ -92,8 +100,15 @@ def vector(raw: Raw, trajectory: np.ndarray, frames: LegFrames, variant: str) ->
     rows = sample_rows(trajectory)
     joints = _joint_sources(raw, rows)
     x = _flat_columns(raw, rows, joints, layout.columns)
-    return ViewArrays("vector", variant, frames.n_legs, {"x": x}, joints["tau"],
-                      np.asarray(trajectory)[rows], {"x": layout.columns})
+    return ViewArrays(
+        "vector",
+        variant,
+        frames.n_legs,
+        {"x": x},
+        joints["tau"],
+        np.asarray(trajectory)[rows],
+        {"x": layout.columns},
+    )
 
 
 def body_graph(raw: Raw, trajectory: np.ndarray, frames: LegFrames, variant: str) -> ViewArrays:
@@ -111,18 +126,27 @@ def body_graph(raw: Raw, trajectory: np.ndarray, frames: LegFrames, variant: str
         node[flag][:, foot_nodes] = np.asarray(raw[flag], np.float64)[rows]
     nodes = np.stack([node[c] for c in layout.node_columns], axis=-1)
     globals_ = _flat_columns(raw, rows, joints, layout.global_columns)
-    return ViewArrays("body_graph", variant, legs,
-                      {"nodes": nodes, "edges": edges, "globals": globals_}, joints["tau"],
-                      np.asarray(trajectory)[rows],
-                      {"nodes": layout.node_columns, "edges": layout.edge_columns,
-                       "globals": layout.global_columns})
+    return ViewArrays(
+        "body_graph",
+        variant,
+        legs,
+        {"nodes": nodes, "edges": edges, "globals": globals_},
+        joints["tau"],
+        np.asarray(trajectory)[rows],
+        {
+            "nodes": layout.node_columns,
+            "edges": layout.edge_columns,
+            "globals": layout.global_columns,
+        },
+    )
 
 
 BUILDERS = {"leg_grouped": leg_grouped, "vector": vector, "body_graph": body_graph}
 
 
-def build_view(raw: Raw, trajectory: np.ndarray, frames: LegFrames, view: str,
-               variant: str = "acc") -> ViewArrays:
+def build_view(
+    raw: Raw, trajectory: np.ndarray, frames: LegFrames, view: str, variant: str = "acc"
+) -> ViewArrays:
     """`view` (leg_grouped, vector, body_graph) of raw columns stacked over trajectories.
 
     `trajectory` (T,) says which trajectory each raw row belongs to; rows of one trajectory

@@ -12,8 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from symbench.core.errors import SymbenchError
-
+from symbench.core.common.errors import SymbenchError
 
 
 def rot_z(angle: float) -> np.ndarray:

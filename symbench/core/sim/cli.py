@@ -7,8 +7,8 @@ import sys
 
 import click
 
-from symbench.core.cli_types import INCLINATION, POSITIVE, SEED, FiniteFloat
-from symbench.core.scenario import DIRECTIONS
+from symbench.core.common.cli_types import INCLINATION, POSITIVE, SEED, FiniteFloat
+from symbench.core.sim.scenario import DIRECTIONS
 
 
 @click.group("sim")
@@ -18,24 +18,57 @@ def sim() -> None:
 
 @sim.command("check")
 @click.option("--robot", required=True, help="Registered robot, e.g. hexa.")
-@click.option("--inclination", type=INCLINATION, default=90.0, show_default=True,
-              help="Surface inclination in degrees: 0 floor, 90 wall, 180 ceiling.")
-@click.option("--heading", type=FiniteFloat(), default=0.0, show_default=True,
-              help="Slope heading: rotation of the scene about gravity, degrees.")
-@click.option("--yaw", type=FiniteFloat(), default=0.0, show_default=True,
-              help="Initial base yaw relative to the slope, degrees.")
-@click.option("--direction", type=click.Choice(list(DIRECTIONS)), default="forward",
-              show_default=True, help="Step direction in the body frame.")
+@click.option(
+    "--inclination",
+    type=INCLINATION,
+    default=90.0,
+    show_default=True,
+    help="Surface inclination in degrees: 0 floor, 90 wall, 180 ceiling.",
+)
+@click.option(
+    "--heading",
+    type=FiniteFloat(),
+    default=0.0,
+    show_default=True,
+    help="Slope heading: rotation of the scene about gravity, degrees.",
+)
+@click.option(
+    "--yaw",
+    type=FiniteFloat(),
+    default=0.0,
+    show_default=True,
+    help="Initial base yaw relative to the slope, degrees.",
+)
+@click.option(
+    "--direction",
+    type=click.Choice(list(DIRECTIONS)),
+    default="forward",
+    show_default=True,
+    help="Step direction in the body frame.",
+)
 @click.option("--seconds", type=POSITIVE, default=10.0, show_default=True)
 @click.option("--seed", type=SEED, default=0, show_default=True)
-@click.option("--control-period", type=POSITIVE, default=None,
-              help="Seconds between whole-body QP solves [default: every physics step, 1 ms].")
+@click.option(
+    "--control-period",
+    type=POSITIVE,
+    default=None,
+    help="Seconds between whole-body QP solves [default: every physics step, 1 ms].",
+)
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
-def check_command(robot: str, inclination: float, heading: float, yaw: float, direction: str,
-                  seconds: float, seed: int, control_period: float | None, as_json: bool) -> None:
+def check_command(
+    robot: str,
+    inclination: float,
+    heading: float,
+    yaw: float,
+    direction: str,
+    seconds: float,
+    seed: int,
+    control_period: float | None,
+    as_json: bool,
+) -> None:
     """Run the controller; exit status 1 when the robot detached."""
-    from symbench.core.scenario import Scenario
     from symbench.core.sim.check import check
+    from symbench.core.sim.scenario import Scenario
 
     scenario = Scenario(robot, inclination, heading, yaw, direction, None, seed, seconds)
     report = check(scenario, control_period)
@@ -50,18 +83,28 @@ def check_command(robot: str, inclination: float, heading: float, yaw: float, di
 def _print_report(report) -> None:
     m, s = report.metrics, report.scenario
     state = "attached" if report.attached else f"DETACHED ({report.failure})"
-    click.echo(f"{s['robot']} at {s['inclination_deg']:g} deg (heading {s['heading_deg']:g}, "
-               f"yaw {s['yaw_deg']:g}, {s['direction']}), {m['sim_seconds']:.2f} s: {state}")
+    click.echo(
+        f"{s['robot']} at {s['inclination_deg']:g} deg (heading {s['heading_deg']:g}, "
+        f"yaw {s['yaw_deg']:g}, {s['direction']}), {m['sim_seconds']:.2f} s: {state}"
+    )
     click.echo(f"  walked {m['distance_walked'] * 100:.1f} cm along the commanded direction")
-    click.echo(f"  base tracking error: rms {m['base_error_rms'] * 1000:.1f} mm, "
-               f"max {m['base_error_max'] * 1000:.1f} mm")
-    click.echo(f"  swing ankle error:   rms {m['swing_error_rms'] * 1000:.1f} mm, "
-               f"max {m['swing_error_max'] * 1000:.1f} mm")
-    click.echo(f"  peak torque (coxa/femur/tibia): {m['peak_torque_coxa']:.2f} / "
-               f"{m['peak_torque_femur']:.2f} / {m['peak_torque_tibia']:.2f} N m, "
-               f"limit {m['torque_limit']:g} N m ({m['clipped_fraction']:.1%} of torques at the clip)")
-    click.echo(f"  real-time factor: {m['real_time_factor']:.2f} "
-               f"(controller every {m['control_period'] * 1000:g} ms)")
+    click.echo(
+        f"  base tracking error: rms {m['base_error_rms'] * 1000:.1f} mm, "
+        f"max {m['base_error_max'] * 1000:.1f} mm"
+    )
+    click.echo(
+        f"  swing ankle error:   rms {m['swing_error_rms'] * 1000:.1f} mm, "
+        f"max {m['swing_error_max'] * 1000:.1f} mm"
+    )
+    click.echo(
+        f"  peak torque (coxa/femur/tibia): {m['peak_torque_coxa']:.2f} / "
+        f"{m['peak_torque_femur']:.2f} / {m['peak_torque_tibia']:.2f} N m, "
+        f"limit {m['torque_limit']:g} N m ({m['clipped_fraction']:.1%} of torques at the clip)"
+    )
+    click.echo(
+        f"  real-time factor: {m['real_time_factor']:.2f} "
+        f"(controller every {m['control_period'] * 1000:g} ms)"
+    )
 
 
 @sim.command("mjcf")
@@ -70,7 +113,7 @@ def _print_report(report) -> None:
 @click.option("--heading", type=FiniteFloat(), default=0.0, show_default=True)
 def mjcf_command(robot: str, inclination: float, heading: float) -> None:
     """Print the generated MJCF of ROBOT on its arena (for inspection; never stored)."""
-    from symbench.core.robots import load_robot
+    from symbench.core.robot.specs import load_robot
     from symbench.core.sim.arena import Arena
     from symbench.core.sim.model import build_spec
 

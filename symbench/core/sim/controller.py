@@ -26,7 +26,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from symbench.core.robots import RobotSpec
+from symbench.core.robot.specs import RobotSpec
 from symbench.core.sim.gait import RELEASE, SWING, TOUCHDOWN, GaitPlan, GaitTargets
 from symbench.core.sim.kinematics import leg_ik
 from symbench.core.sim.layout import ModelLayout
@@ -84,8 +84,15 @@ def _inv3(m: np.ndarray) -> np.ndarray:
 
 
 class WholeBodyController:
-    def __init__(self, spec: RobotSpec, model, layout: ModelLayout, plan: GaitPlan,
-                 base_rotation: np.ndarray, gains: ControllerGains | None = None):
+    def __init__(
+        self,
+        spec: RobotSpec,
+        model,
+        layout: ModelLayout,
+        plan: GaitPlan,
+        base_rotation: np.ndarray,
+        gains: ControllerGains | None = None,
+    ):
         import mujoco
 
         self._full_m = mujoco.mj_fullM
@@ -103,9 +110,16 @@ class WholeBodyController:
         t2 = np.cross(self.normal, t1)
         mu = spec.magnet.friction * g.friction_margin
         # rows per leg: +-t1 - mu n, +-t2 - mu n (<= mu F), then n (>= -F)
-        self.cone = np.stack([t1 - mu * self.normal, -t1 - mu * self.normal,
-                              t2 - mu * self.normal, -t2 - mu * self.normal,
-                              np.broadcast_to(self.normal, t1.shape)], axis=1)  # (n, 5, 3)
+        self.cone = np.stack(
+            [
+                t1 - mu * self.normal,
+                -t1 - mu * self.normal,
+                t2 - mu * self.normal,
+                -t2 - mu * self.normal,
+                np.broadcast_to(self.normal, t1.shape),
+            ],
+            axis=1,
+        )  # (n, 5, 3)
         self.mu = mu
         self.rot_bl = spec.leg_rotations()
         self.org_bl = spec.leg_origins()
@@ -191,8 +205,17 @@ class WholeBodyController:
         vel[:, 6:, 0] = qd
         ankle_vel = (jac @ vel)[..., 0]
         # the stepping leg is tracked while swinging and, pressing on, until it touches down
-        swing = step_leg if (step_leg >= 0 and (phase[step_leg] == SWING or (
-            phase[step_leg] == TOUCHDOWN and not touching[step_leg]))) else -1
+        swing = (
+            step_leg
+            if (
+                step_leg >= 0
+                and (
+                    phase[step_leg] == SWING
+                    or (phase[step_leg] == TOUCHDOWN and not touching[step_leg])
+                )
+            )
+            else -1
+        )
 
         # contact set: feet that are down (lifted only while swinging; touchdown once felt)
         down = (phase != SWING) & ((phase != TOUCHDOWN) | touching)
@@ -219,8 +242,11 @@ class WholeBodyController:
             T_legs[swing, :, 6:9] = self._eye3
 
         # --- objective ---------------------------------------------------------------------
-        a_lin = (tg.base_acc + g.base_kp * (tg.base_pos - qpos[:3])
-                 + g.base_kd * (tg.base_vel - qvel[:3]))
+        a_lin = (
+            tg.base_acc
+            + g.base_kp * (tg.base_pos - qpos[:3])
+            + g.base_kd * (tg.base_vel - qvel[:3])
+        )
         omega = r_base @ qvel[3:6]
         a_ang = g.base_kp * _vee_error(self.r_ref, r_base) - g.base_kd * omega
         H, grad = self._H, self._grad
@@ -231,13 +257,17 @@ class WholeBodyController:
         if swing >= 0:
             press = PRESS if phase[swing] == TOUCHDOWN else 0.0
             ankle_ref = tg.sole_pos + (self.foot - press) * self.normal
-            a_sw = (tg.sole_acc + g.swing_kp * (ankle_ref - ankle[swing])
-                    + g.swing_kd * (tg.sole_vel - ankle_vel[swing]))
+            a_sw = (
+                tg.sole_acc
+                + g.swing_kp * (ankle_ref - ankle[swing])
+                + g.swing_kd * (tg.sole_vel - ankle_vel[swing])
+            )
             js = jac[swing]  # (3, 9) on [base acc, swing joint acc]
             H[:9, :9] += g.w_task * (js.T @ js)
             grad[:9] -= g.w_task * (js.T @ a_sw)
-        H.reshape(-1)[self._force_diag] += np.where(phase == RELEASE, g.w_release,
-                                                    g.w_force).repeat(3)
+        H.reshape(-1)[self._force_diag] += np.where(
+            phase == RELEASE, g.w_release, g.w_force
+        ).repeat(3)
 
         # --- dynamics: M_r (T x + c) + h_r = S'tau + sum J_i' f_i -------------------------
         mt = m_r @ T

@@ -7,8 +7,14 @@ import numpy as np
 COS_TILT_LIMIT = np.cos(np.radians(30.0))  # base normal vs surface normal: beyond, it fell
 
 
-def detachment(stance: np.ndarray, contact: np.ndarray, data, base_body: int,
-               normal: np.ndarray, height0: float) -> str | None:
+def detachment(
+    stance: np.ndarray,
+    contact: np.ndarray,
+    data,
+    base_body: int,
+    normal: np.ndarray,
+    height0: float,
+) -> str | None:
     """Why the robot counts as fallen off the surface now, or None while it holds on."""
     if not np.isfinite(data.qacc).all():
         return "the physics diverged (non-finite accelerations)"

@@ -18,8 +18,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from symbench.core.errors import SymbenchError
-from symbench.core.robots import RobotSpec
+from symbench.core.common.errors import SymbenchError
+from symbench.core.robot.specs import RobotSpec
 
 STANCE, RELEASE, SWING, TOUCHDOWN = 0, 1, 2, 3
 ZERO3 = np.zeros(3)
@@ -44,18 +44,28 @@ def check_order(order: tuple[int, ...], n_legs: int) -> tuple[int, ...]:
 def min_jerk(u: float) -> tuple[float, float, float]:
     """Position, velocity and acceleration (per unit duration) of 10u^3 - 15u^4 + 6u^5."""
     u = min(max(u, 0.0), 1.0)
-    return (u**3 * (10 - 15 * u + 6 * u**2), 30 * u**2 * (1 - u) ** 2,
-            60 * u * (1 - u) * (1 - 2 * u))
+    return (
+        u**3 * (10 - 15 * u + 6 * u**2),
+        30 * u**2 * (1 - u) ** 2,
+        60 * u * (1 - u) * (1 - 2 * u),
+    )
 
 
 def hermite(p0, v0, p1, v1, u: float, duration: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Cubic Hermite segment at u in [0, 1]: position, velocity, acceleration."""
     u2, u3, T = u * u, u * u * u, duration
-    basis = np.array([
-        [2 * u3 - 3 * u2 + 1, u3 - 2 * u2 + u, -2 * u3 + 3 * u2, u3 - u2],
-        [(6 * u2 - 6 * u) / T, (3 * u2 - 4 * u + 1) / T, (-6 * u2 + 6 * u) / T, (3 * u2 - 2 * u) / T],
-        [(12 * u - 6) / T**2, (6 * u - 4) / T**2, (-12 * u + 6) / T**2, (6 * u - 2) / T**2],
-    ])
+    basis = np.array(
+        [
+            [2 * u3 - 3 * u2 + 1, u3 - 2 * u2 + u, -2 * u3 + 3 * u2, u3 - u2],
+            [
+                (6 * u2 - 6 * u) / T,
+                (3 * u2 - 4 * u + 1) / T,
+                (-6 * u2 + 6 * u) / T,
+                (3 * u2 - 2 * u) / T,
+            ],
+            [(12 * u - 6) / T**2, (6 * u - 4) / T**2, (-12 * u + 6) / T**2, (6 * u - 2) / T**2],
+        ]
+    )
     pos, vel, acc = basis @ np.array([p0, T * v0, p1, T * v1])
     return pos, vel, acc
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from symbench.core.robots import RobotSpec
+from symbench.core.robot.specs import RobotSpec
 
 
 def leg_fk(spec: RobotSpec, q: np.ndarray) -> np.ndarray:

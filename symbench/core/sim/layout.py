@@ -10,9 +10,17 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from symbench.core.robots import JOINT_NAMES, RobotSpec
-from symbench.core.sim.model import (BASE, PAD_SPHERE_RADIUS, PAD_SPHERES, SURFACE, joint_name,
-                                     magnet_name, pad_sphere_name, sole_name)
+from symbench.core.robot.specs import JOINT_NAMES, RobotSpec
+from symbench.core.sim.model import (
+    BASE,
+    PAD_SPHERE_RADIUS,
+    PAD_SPHERES,
+    SURFACE,
+    joint_name,
+    magnet_name,
+    pad_sphere_name,
+    sole_name,
+)
 
 
 @dataclass(frozen=True)
@@ -54,13 +62,24 @@ class ModelLayout:
             motor=np.array([[aid(joint_name(i, j)) for j in JOINT_NAMES] for i in range(n)]),
             magnet=np.array([aid(magnet_name(i)) for i in range(n)]),
             ankle_pitch=model.jnt_qposadr[[jid(i, "ankle0") for i in range(n)]],
-            ankle_body=np.array([mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, f"leg{i}_ankle0")
-                                 for i in range(n)]),
-            sole_geom=np.array([mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, sole_name(i))
-                                for i in range(n)]),
-            pad_geom=np.array([[mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM,
-                                                  pad_sphere_name(i, k))
-                                for k in range(PAD_SPHERES)] for i in range(n)]),
+            ankle_body=np.array(
+                [
+                    mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, f"leg{i}_ankle0")
+                    for i in range(n)
+                ]
+            ),
+            sole_geom=np.array(
+                [mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, sole_name(i)) for i in range(n)]
+            ),
+            pad_geom=np.array(
+                [
+                    [
+                        mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, pad_sphere_name(i, k))
+                        for k in range(PAD_SPHERES)
+                    ]
+                    for i in range(n)
+                ]
+            ),
             surface_geom=mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, SURFACE),
             base_body=base,
             reduced=np.concatenate([base_dof + np.arange(6), dof.reshape(-1)]),

@@ -25,8 +25,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from symbench.core.scenario import Scenario
 from symbench.core.sim.failure import detachment
+from symbench.core.sim.scenario import Scenario
 
 GRACE_S = 0.1  # s a stance foot may stay off the surface before the climb counts as failed
 
@@ -51,8 +51,12 @@ def _desired(reference: dict[str, np.ndarray], t: float, period: float) -> dict[
     return {c: (1 - a) * reference[c][k] + a * reference[c][k + 1] for c in ("q", "qd")}
 
 
-def track(scenario: Scenario, reference: dict[str, np.ndarray], policy: Policy,
-          pd_gains: tuple[float, float] = (0.0, 0.0)) -> Tracking:
+def track(
+    scenario: Scenario,
+    reference: dict[str, np.ndarray],
+    policy: Policy,
+    pd_gains: tuple[float, float] = (0.0, 0.0),
+) -> Tracking:
     """Run `policy` on `scenario` against `reference` (raw columns every record period)."""
     import mujoco
 
@@ -90,8 +94,12 @@ def track(scenario: Scenario, reference: dict[str, np.ndarray], policy: Policy,
         target = _desired(reference, data.time + period, period)
         # measured state now; what is not measured (base acceleration, qdd, magnets) is the
         # desired motion from the reference, like the desired state one period ahead
-        rows = {c: np.stack([now[c] if c in now else reference[c][k], target.get(c, reference[c][k + 1])])
-                for c in reference}
+        rows = {
+            c: np.stack(
+                [now[c] if c in now else reference[c][k], target.get(c, reference[c][k + 1])]
+            )
+            for c in reference
+        }
         q, qd = now["q"], now["qd"]
         tau = np.asarray(policy(rows), dtype=np.float64)
         tau = np.clip(tau + pd_p * (target["q"] - q) + pd_d * (target["qd"] - qd), -limit, limit)

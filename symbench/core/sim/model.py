@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from symbench.core.robots import JOINT_NAMES, RobotSpec
+from symbench.core.robot.specs import JOINT_NAMES, RobotSpec
 from symbench.core.sim.arena import Arena, mat_to_quat
 from symbench.core.sim.kinematics import leg_fk
 
@@ -88,12 +88,18 @@ def _inertial(body, mass: float, inertia, com=(0.0, 0.0, 0.0)) -> None:
     body.explicitinertial = True
 
 
-def _hinge(body, name: str, axis, lower: float, upper: float, damping: float = 0.0,
-           stiffness: float = 0.0):
+def _hinge(
+    body, name: str, axis, lower: float, upper: float, damping: float = 0.0, stiffness: float = 0.0
+):
     import mujoco
 
-    joint = body.add_joint(name=name, type=mujoco.mjtJoint.mjJNT_HINGE, axis=list(axis),
-                           range=[lower, upper], limited=mujoco.mjtLimited.mjLIMITED_TRUE)
+    joint = body.add_joint(
+        name=name,
+        type=mujoco.mjtJoint.mjJNT_HINGE,
+        axis=list(axis),
+        range=[lower, upper],
+        limited=mujoco.mjtLimited.mjLIMITED_TRUE,
+    )
     joint.damping = np.array([damping, 0.0, 0.0])
     joint.stiffness = np.array([stiffness, 0.0, 0.0])
     return joint
@@ -102,8 +108,14 @@ def _hinge(body, name: str, axis, lower: float, upper: float, damping: float = 0
 def _visual_capsule(body, length: float, radius: float) -> None:
     import mujoco
 
-    body.add_geom(type=mujoco.mjtGeom.mjGEOM_CAPSULE, fromto=[0, 0, 0, length, 0, 0],
-                  size=[radius, 0, 0], contype=0, conaffinity=0, group=1)
+    body.add_geom(
+        type=mujoco.mjtGeom.mjGEOM_CAPSULE,
+        fromto=[0, 0, 0, length, 0, 0],
+        size=[radius, 0, 0],
+        contype=0,
+        conaffinity=0,
+        group=1,
+    )
 
 
 def _add_joint_servo(spec_mj, joint: str, spec: RobotSpec) -> None:
@@ -142,26 +154,48 @@ def _add_leg(spec_mj, base, spec: RobotSpec, i: int) -> None:
         name = foot_name(i) if k == 2 else f"leg{i}_ankle{k}"
         body = parent.add_body(name=name, pos=list(pos), quat=list(quat))
         _inertial(body, leg.ankle_masses[k], leg.ankle_inertias[k])
-        _hinge(body, f"leg{i}_ankle{k}", ANKLE_AXES[k], leg.ankle_lower[k], leg.ankle_upper[k],
-               leg.ankle_damping, leg.ankle_stiffness)
+        _hinge(
+            body,
+            f"leg{i}_ankle{k}",
+            ANKLE_AXES[k],
+            leg.ankle_lower[k],
+            leg.ankle_upper[k],
+            leg.ankle_damping,
+            leg.ankle_stiffness,
+        )
         parent, pos = body, (0.0, 0.0, 0.0)
     reach = ankle_to_sole(spec)
     for k, (y, z) in enumerate(pad_points(spec)):  # the magnet pad, facing along the foot x
-        parent.add_geom(name=pad_sphere_name(i, k), type=mujoco.mjtGeom.mjGEOM_SPHERE,
-                        size=[PAD_SPHERE_RADIUS, 0, 0], pos=[reach - PAD_SPHERE_RADIUS, y, z],
-                        contype=ROBOT_BITS[0], conaffinity=ROBOT_BITS[1],
-                        friction=[spec.magnet.friction, 0.0, 0.0], condim=3,
-                        solref=list(SOLE_SOLREF), solimp=list(SOLE_SOLIMP), margin=SOLE_MARGIN)
+        parent.add_geom(
+            name=pad_sphere_name(i, k),
+            type=mujoco.mjtGeom.mjGEOM_SPHERE,
+            size=[PAD_SPHERE_RADIUS, 0, 0],
+            pos=[reach - PAD_SPHERE_RADIUS, y, z],
+            contype=ROBOT_BITS[0],
+            conaffinity=ROBOT_BITS[1],
+            friction=[spec.magnet.friction, 0.0, 0.0],
+            condim=3,
+            solref=list(SOLE_SOLREF),
+            solimp=list(SOLE_SOLIMP),
+            margin=SOLE_MARGIN,
+        )
     # the pad's envelope: a disk whose axis is the foot axis, enclosing the spheres
-    parent.add_geom(name=sole_name(i), type=mujoco.mjtGeom.mjGEOM_CYLINDER,
-                    size=[spec.leg.sole_radius, PAD_HALF_THICKNESS, 0],
-                    pos=[reach - PAD_HALF_THICKNESS, 0, 0], quat=[np.sqrt(0.5), 0, np.sqrt(0.5), 0],
-                    contype=0, conaffinity=0, group=1)
+    parent.add_geom(
+        name=sole_name(i),
+        type=mujoco.mjtGeom.mjGEOM_CYLINDER,
+        size=[spec.leg.sole_radius, PAD_HALF_THICKNESS, 0],
+        pos=[reach - PAD_HALF_THICKNESS, 0, 0],
+        quat=[np.sqrt(0.5), 0, np.sqrt(0.5), 0],
+        contype=0,
+        conaffinity=0,
+        group=1,
+    )
     _visual_capsule(parent, reach - 2 * PAD_HALF_THICKNESS, 0.02)
     for joint in JOINT_NAMES:
         _add_joint_servo(spec_mj, joint_name(i, joint), spec)
-    magnet = spec_mj.add_actuator(name=magnet_name(i), target=foot_name(i),
-                                  trntype=mujoco.mjtTrn.mjTRN_BODY)
+    magnet = spec_mj.add_actuator(
+        name=magnet_name(i), target=foot_name(i), trntype=mujoco.mjtTrn.mjTRN_BODY
+    )
     magnet.set_to_adhesion(gain=spec.magnet.force)
     magnet.ctrlrange = [0.0, 1.0]
 
@@ -184,15 +218,26 @@ def build_spec(spec: RobotSpec, arena: Arena):
     opt.iterations = 100
     opt.tolerance = 1e-12
     opt.gravity = [0.0, 0.0, -9.81]
-    m.worldbody.add_geom(name=SURFACE, type=mujoco.mjtGeom.mjGEOM_PLANE, size=[0, 0, 0.05],
-                         quat=list(mat_to_quat(arena.rotation)), contype=SURFACE_BITS[0],
-                         conaffinity=SURFACE_BITS[1], friction=[spec.magnet.friction, 0, 0])
+    m.worldbody.add_geom(
+        name=SURFACE,
+        type=mujoco.mjtGeom.mjGEOM_PLANE,
+        size=[0, 0, 0.05],
+        quat=list(mat_to_quat(arena.rotation)),
+        contype=SURFACE_BITS[0],
+        conaffinity=SURFACE_BITS[1],
+        friction=[spec.magnet.friction, 0, 0],
+    )
     base = m.worldbody.add_body(name=BASE)
     base.add_freejoint(name="root")
     _inertial(base, spec.base_mass, spec.base_inertia)
-    base.add_geom(name="base_shell", type=mujoco.mjtGeom.mjGEOM_ELLIPSOID,
-                  size=list(spec.base_semi_axes), contype=ROBOT_BITS[0],
-                  conaffinity=ROBOT_BITS[1], friction=[spec.magnet.friction, 0, 0])
+    base.add_geom(
+        name="base_shell",
+        type=mujoco.mjtGeom.mjGEOM_ELLIPSOID,
+        size=list(spec.base_semi_axes),
+        contype=ROBOT_BITS[0],
+        conaffinity=ROBOT_BITS[1],
+        friction=[spec.magnet.friction, 0, 0],
+    )
     for i in range(spec.n_legs):
         _add_leg(m, base, spec, i)
     return m

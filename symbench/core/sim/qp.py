@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from symbench.core.errors import SymbenchError
+from symbench.core.common.errors import SymbenchError
 
 INF = 1e8
 EPS_ABS = 1e-10
@@ -36,7 +36,7 @@ class DenseQP:
         settings.initial_guess = self._proxqp.InitialGuess.WARM_START_WITH_PREVIOUS_RESULT
         return qp
 
-    def solve(self, H, g, A, b, C, l, u) -> np.ndarray:
+    def solve(self, H, g, A, b, C, l, u) -> np.ndarray:  # noqa: E741 (the QP's own names)
         """The minimiser; a warm start that fails is retried cold, then InfeasibleQP."""
         if self._qp is not None:
             self._qp.update(H, g, A, b, C, l, u, update_preconditioner=False)

@@ -19,18 +19,19 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from symbench.core.errors import SymbenchError
-from symbench.core.raw import validate_raw
-from symbench.core.scenario import Scenario
+from symbench.core.common.errors import SymbenchError
 from symbench.core.sim.controller import ControlOutput, WholeBodyController
 from symbench.core.sim.failure import detachment
 from symbench.core.sim.gait import STANCE, SWING
 from symbench.core.sim.model import SOLE_MARGIN
+from symbench.core.sim.raw import validate_raw
+from symbench.core.sim.scenario import Scenario
 from symbench.core.sim.setup import Climb
+
 
 @dataclass
 class Rollout:
-    arrays: dict[str, np.ndarray]  # exactly the columns of symbench/core/raw.py
+    arrays: dict[str, np.ndarray]  # exactly the columns of symbench/core/sim/raw.py
     attached: bool  # False when a stance foot left the surface or the base fell
     failure: str | None  # what went wrong, when it did
     metrics: dict[str, float] = field(default_factory=dict)  # tracking, torque, timing
@@ -40,9 +41,20 @@ class _Recorder:
     """Pre-allocated raw columns, filled row by row."""
 
     def __init__(self, n_rows: int, n_legs: int):
-        shapes = {"t": (), "base_pos": (3,), "base_quat": (4,), "base_linvel": (3,),
-                  "base_angvel": (3,), "base_linacc": (3,), "q": (n_legs, 3), "qd": (n_legs, 3),
-                  "qdd": (n_legs, 3), "tau": (n_legs, 3), "contact": (n_legs,), "magnet": (n_legs,)}
+        shapes = {
+            "t": (),
+            "base_pos": (3,),
+            "base_quat": (4,),
+            "base_linvel": (3,),
+            "base_angvel": (3,),
+            "base_linacc": (3,),
+            "q": (n_legs, 3),
+            "qd": (n_legs, 3),
+            "qdd": (n_legs, 3),
+            "tau": (n_legs, 3),
+            "contact": (n_legs,),
+            "magnet": (n_legs,),
+        }
         self.cols = {k: np.zeros((n_rows, *s)) for k, s in shapes.items()}
         self.rows = 0
 
@@ -57,9 +69,13 @@ def _period_steps(period: float, timestep: float, what: str) -> int:
     return k
 
 
-def run_climb(climb: Climb, seconds: float, record_period: float = 0.006,
-              on_step: Callable[[ControlOutput, object], None] | None = None,
-              control_period: float | None = None) -> Rollout:
+def run_climb(
+    climb: Climb,
+    seconds: float,
+    record_period: float = 0.006,
+    on_step: Callable[[ControlOutput, object], None] | None = None,
+    control_period: float | None = None,
+) -> Rollout:
     """Simulate `climb` for `seconds`; stops early (attached=False) when the robot falls.
 
     The whole-body controller runs every `control_period` seconds (default: every physics
@@ -98,8 +114,9 @@ def run_climb(climb: Climb, seconds: float, record_period: float = 0.006,
             data.ctrl[lay.motor] = out.command
             data.ctrl[lay.magnet] = out.magnet
             stats.update(out, data, lay, task.plan)
-            failure = detachment(out.targets.phase == STANCE, contact, data, lay.base_body,
-                                 normal, height0)
+            failure = detachment(
+                out.targets.phase == STANCE, contact, data, lay.base_body, normal, height0
+            )
             if failure is not None:
                 failure = f"t={t:.3f} s: {failure}"
                 break
@@ -131,9 +148,12 @@ def run_climb(climb: Climb, seconds: float, record_period: float = 0.006,
     arrays = rec.trimmed()
     validate_raw(arrays, spec.n_legs, source=f"rollout of {spec.name}")
     metrics = stats.summary(spec, data, task.plan)
-    metrics.update(sim_seconds=float(data.time), wall_seconds=wall,
-                   real_time_factor=float(data.time) / wall if wall > 0 else float("inf"),
-                   control_period=control_every * dt)
+    metrics.update(
+        sim_seconds=float(data.time),
+        wall_seconds=wall,
+        real_time_factor=float(data.time) / wall if wall > 0 else float("inf"),
+        control_period=control_every * dt,
+    )
     return Rollout(arrays, failure is None, failure, metrics)
 
 
@@ -186,9 +206,14 @@ class _Stats:
         }
 
 
-def simulate(scenario: Scenario, record_period: float = 0.006,
-             control_period: float | None = None) -> Rollout:
+def simulate(
+    scenario: Scenario, record_period: float = 0.006, control_period: float | None = None
+) -> Rollout:
     """The contract entry point: one scenario, raw columns every `record_period` seconds
     (controller every physics step unless `control_period` says otherwise)."""
-    return run_climb(Climb.from_scenario(scenario), scenario.seconds, record_period,
-                     control_period=control_period)
+    return run_climb(
+        Climb.from_scenario(scenario),
+        scenario.seconds,
+        record_period,
+        control_period=control_period,
+    )

@@ -10,12 +10,12 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from symbench.core.robots import RobotSpec, load_robot
-from symbench.core.scenario import Scenario
+from symbench.core.robot.specs import RobotSpec, load_robot
 from symbench.core.sim.arena import Arena, rot_z
 from symbench.core.sim.gait import GaitPlan, check_order, default_order
 from symbench.core.sim.kinematics import leg_fk, leg_ik
 from symbench.core.sim.model import ankle_to_sole, stance_height
+from symbench.core.sim.scenario import Scenario
 
 # Seeded start perturbation: a translation in the surface plane and a small base twist,
 # both world-frame, so that they commute with the robot's rotation symmetry.
@@ -46,9 +46,14 @@ class Climb:
         spec = spec or load_robot(scenario.robot)
         step = spec.symmetry_angle_deg
         k = int(np.floor(round(scenario.yaw_deg % 360.0, 9) / step))
-        base = cls(spec, Arena(scenario.inclination_deg, scenario.heading_deg),
-                   scenario.yaw_deg - k * step, scenario.direction_deg, scenario.leg_order,
-                   scenario.seed)
+        base = cls(
+            spec,
+            Arena(scenario.inclination_deg, scenario.heading_deg),
+            scenario.yaw_deg - k * step,
+            scenario.direction_deg,
+            scenario.leg_order,
+            scenario.seed,
+        )
         return replace(base.turned(k), yaw_deg=scenario.yaw_deg)
 
     def turned(self, steps: int = 1) -> Climb:
@@ -58,8 +63,12 @@ class Climb:
         spec = self.spec
         k, angle = spec.symmetry_shift * steps, spec.symmetry_angle_deg * steps
         order = tuple((leg - k) % spec.n_legs for leg in self.leg_order)
-        return replace(self, yaw_deg=self.yaw_deg + angle,
-                       direction_deg=self.direction_deg - angle, order=order)
+        return replace(
+            self,
+            yaw_deg=self.yaw_deg + angle,
+            direction_deg=self.direction_deg - angle,
+            order=order,
+        )
 
     @property
     def leg_order(self) -> tuple[int, ...]:
@@ -85,9 +94,12 @@ class Climb:
         dir_body = np.array([np.cos(beta), np.sin(beta), 0.0])
         offset, _, _ = self._seeded()
         base = stance_height(spec) * self.arena.normal + offset
-        soles = self._nominal_soles_body() + np.outer(GaitPlan.stagger(spec, self.leg_order), dir_body)
-        return GaitPlan(spec, self.leg_order, r_wb @ dir_body, self.arena.normal, base,
-                        base + soles @ r_wb.T)
+        soles = self._nominal_soles_body() + np.outer(
+            GaitPlan.stagger(spec, self.leg_order), dir_body
+        )
+        return GaitPlan(
+            spec, self.leg_order, r_wb @ dir_body, self.arena.normal, base, base + soles @ r_wb.T
+        )
 
     def _nominal_soles_body(self) -> np.ndarray:
         spec = self.spec

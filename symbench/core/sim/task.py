@@ -17,16 +17,16 @@ import numpy as np
 
 os.environ.setdefault("MUJOCO_GL", "disable")  # no rendering: never open a display
 
-from dm_control import mujoco as dm_mujoco  # noqa: E402
-from dm_control.mujoco import wrapper  # noqa: E402
-from dm_control.rl import control  # noqa: E402
-from dm_control.suite import base  # noqa: E402
+from dm_control import mujoco as dm_mujoco
+from dm_control.mujoco import wrapper
+from dm_control.rl import control
+from dm_control.suite import base
 
-from symbench.core.sim.arena import mat_to_quat  # noqa: E402
-from symbench.core.sim.gait import GaitPlan  # noqa: E402
-from symbench.core.sim.layout import ModelLayout  # noqa: E402
-from symbench.core.sim.model import compile_model  # noqa: E402
-from symbench.core.sim.setup import Climb  # noqa: E402
+from symbench.core.sim.arena import mat_to_quat
+from symbench.core.sim.gait import GaitPlan
+from symbench.core.sim.layout import ModelLayout
+from symbench.core.sim.model import compile_model
+from symbench.core.sim.setup import Climb
 
 
 class Physics(dm_mujoco.Physics):
@@ -106,19 +106,28 @@ class ClimbTask(base.Task):
         return float(physics.data.qvel[:3] @ self.plan.direction)
 
 
-def load_climb(climb: Climb, time_limit: float = 10.0, environment_kwargs: dict | None = None
-               ) -> control.Environment:
+def load_climb(
+    climb: Climb, time_limit: float = 10.0, environment_kwargs: dict | None = None
+) -> control.Environment:
     physics = make_physics(climb)
     task = ClimbTask(climb)
     return control.Environment(physics, task, time_limit=time_limit, **(environment_kwargs or {}))
 
 
-def load(robot: str, inclination_deg: float = 0.0, heading_deg: float = 0.0, yaw_deg: float = 0.0,
-         direction: str = "forward", leg_order: tuple[int, ...] | None = None, seed: int = 0,
-         time_limit: float = 10.0, environment_kwargs: dict | None = None) -> control.Environment:
+def load(
+    robot: str,
+    inclination_deg: float = 0.0,
+    heading_deg: float = 0.0,
+    yaw_deg: float = 0.0,
+    direction: str = "forward",
+    leg_order: tuple[int, ...] | None = None,
+    seed: int = 0,
+    time_limit: float = 10.0,
+    environment_kwargs: dict | None = None,
+) -> control.Environment:
     """The suite-style loader: a `control.Environment` for `robot` on the given slope (the
     same climb as `Scenario` gives, gait carried along the symmetry)."""
-    from symbench.core.scenario import Scenario
+    from symbench.core.sim.scenario import Scenario
 
     scenario = Scenario(robot, inclination_deg, heading_deg, yaw_deg, direction, leg_order, seed)
     return load_climb(Climb.from_scenario(scenario), time_limit, environment_kwargs)

@@ -3,9 +3,14 @@
 from __future__ import annotations
 
 import symbench
-from symbench.core.entries import EvaluatorEntry
+from symbench import EvaluatorEntry
 from symbench.plugins.evaluators import (
-    closed_loop, equivariance, generalization, invariance, sample_efficiency, torque_error,
+    closed_loop,
+    equivariance,
+    generalization,
+    invariance,
+    sample_efficiency,
+    torque_error,
 )
 
 MODULES = (torque_error, equivariance, invariance, generalization, sample_efficiency, closed_loop)

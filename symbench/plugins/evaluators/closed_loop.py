@@ -11,20 +11,19 @@ from __future__ import annotations
 
 import numpy as np
 
-from symbench.core.evaluation import EvaluationContext
+from symbench import EvaluationContext
 
 NAME = "closed-loop"
-DESCRIPTION = "learned model as the controller tracking held-out 10 s climbs (alone and with small PD)"
+DESCRIPTION = (
+    "learned model as the controller tracking held-out 10 s climbs (alone and with small PD)"
+)
 SECONDS = {"smoke": 0.3, "small": 10.0, "paper": 10.0}
 SCENARIOS = 2  # held-out references per run
 PD_FRACTION = 0.1  # the small PD term: a tenth of the robot's servo gains
 
 
 def evaluate(context: EvaluationContext) -> dict:
-    from symbench.core.data.views import build_view
-    from symbench.core.scenario import Scenario
-    from symbench.core.sim.learned_control import track
-    from symbench.core.sim.rollout import simulate
+    from symbench import Scenario, build_view, simulate, track
 
     trained = context.on_split(context.split, "next")
     frames, entry = context.dataset.frames, context.entry
@@ -47,7 +46,11 @@ def evaluate(context: EvaluationContext) -> dict:
         references += 1
         for mode, pd in gains.items():
             runs[mode].append(track(scenario, reference.arrays, policy, pd))
-    out: dict = {"references": references, "horizon_s": seconds, "pd_gains": list(gains["model+pd"])}
+    out: dict = {
+        "references": references,
+        "horizon_s": seconds,
+        "pd_gains": list(gains["model+pd"]),
+    }
     for mode, results in runs.items():
         prefix = "" if mode == "model" else "pd_"
         out.update({prefix + k: v for k, v in _summary(results).items()})
@@ -65,7 +68,9 @@ def _summary(results: list) -> dict:
     def mean(values: list[float]) -> float:
         return float(np.mean(values)) if values else float("nan")
 
-    return {"success_rate": mean([r.attached for r in results]),
-            "time_to_failure_s": mean([r.time_to_failure_s for r in results]),
-            "joint_rmse_rad": mean([r.joint_rmse_rad for r in results]),
-            "failures": [r.failure for r in results if r.failure]}
+    return {
+        "success_rate": mean([r.attached for r in results]),
+        "time_to_failure_s": mean([r.time_to_failure_s for r in results]),
+        "joint_rmse_rad": mean([r.joint_rmse_rad for r in results]),
+        "failures": [r.failure for r in results if r.failure],
+    }

@@ -7,10 +7,7 @@ does f(g . x) equal g . f(x)? Zero to float precision for models built to be equ
 
 from __future__ import annotations
 
-from symbench.core.data.raw_action import act_on_raw
-from symbench.core.evaluation import EvaluationContext, relative_error
-from symbench.core.groups import act
-from symbench.core.schema import TARGET
+from symbench import EvaluationContext, act, act_on_raw, relative_error, schema
 
 NAME = "equivariance"
 DESCRIPTION = "max relative error |f(g.x) - g.f(x)| / |g.f(x)| over the robot's group"
@@ -23,6 +20,10 @@ def evaluate(context: EvaluationContext) -> dict:
     per_element = {}
     for g in context.robot.group:
         moved = context.predict_raw(act_on_raw(g, raw, frames), ids)
-        per_element[g.name] = relative_error(moved, act(g, base, TARGET.reflection_signs))
-    return {"max_rel_error": max(per_element.values()), "per_element": per_element,
-            "group": context.robot.group.name, "samples": int(len(base))}
+        per_element[g.name] = relative_error(moved, act(g, base, schema.TARGET.reflection_signs))
+    return {
+        "max_rel_error": max(per_element.values()),
+        "per_element": per_element,
+        "group": context.robot.group.name,
+        "samples": int(len(base)),
+    }

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from symbench.core.evaluation import EvaluationContext
+from symbench import EvaluationContext
 from symbench.plugins.evaluators.torque_error import split_metrics
 
 NAME = "generalization"

@@ -9,8 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from symbench.core.data.raw_action import rotate_scene_about_gravity
-from symbench.core.evaluation import EvaluationContext, relative_error
+from symbench import EvaluationContext, relative_error, rotate_scene_about_gravity
 
 NAME = "invariance"
 DESCRIPTION = "max relative output change under random rotations about gravity + translations"

@@ -2,8 +2,7 @@
 
 from __future__ import annotations
 
-from symbench.core.evaluation import EvaluationContext
-from symbench.core.plots import sample_efficiency_png
+from symbench import EvaluationContext, sample_efficiency_png
 from symbench.plugins.evaluators.torque_error import split_metrics
 
 NAME = "sample-efficiency"
@@ -19,6 +18,7 @@ def evaluate(context: EvaluationContext) -> dict:
     plot = context.output_dir / f"{context.robot.name}-{context.entry.name}-sample-efficiency.png"
     label = f"{context.entry.name} ({context.entry.backend})"
     x = [float(f) for f in curve]
-    sample_efficiency_png({label: (x, list(curve.values()), None)},
-                          f"{context.robot.name}: sample efficiency", plot)
+    sample_efficiency_png(
+        {label: (x, list(curve.values()), None)}, f"{context.robot.name}: sample efficiency", plot
+    )
     return {"rmse_by_fraction": curve, "plot": str(plot)}

@@ -4,8 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from symbench.core.evaluation import EvaluationContext, TrainedOnSplit, rmse
-from symbench.core.schema import JOINTS
+from symbench import EvaluationContext, TrainedOnSplit, rmse, schema
 
 NAME = "torque-error"
 DESCRIPTION = "test torque RMSE (N m) overall and per joint type; NRMSE = RMSE / target std"
@@ -16,7 +15,7 @@ def torque_metrics(pred: np.ndarray, target: np.ndarray) -> dict[str, float]:
     overall = float(rmse(pred, target))
     return {
         "rmse": overall,
-        **{f"rmse_{j}": float(v) for j, v in zip(JOINTS, per_joint)},
+        **{f"rmse_{j}": float(v) for j, v in zip(schema.JOINTS, per_joint)},
         "nrmse": overall / spread if (spread := float(np.std(target))) > 0 else float("nan"),
         "samples": int(len(target)),
     }

@@ -1,6 +1,6 @@
 """Built-in JAX/Flax models (imports JAX only when a network is built)."""
 
-from symbench.core.hookspecs import hookimpl
+from symbench import hookimpl
 from symbench.plugins.zoo import model_entries
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import flax.linen as nn
 import jax.numpy as jnp
 
-from symbench.core.model_dims import ModelDims
+from symbench import ModelDims
 from symbench.plugins.jax_models.layers import LatentMLP
 
 

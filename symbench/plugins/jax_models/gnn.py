@@ -6,8 +6,7 @@ import flax.linen as nn
 import jax.numpy as jnp
 import numpy as np
 
-from symbench.core import schema
-from symbench.core.model_dims import ModelDims
+from symbench import ModelDims, schema
 from symbench.plugins.jax_models.layers import GraphNetwork
 
 
@@ -17,12 +16,18 @@ class GNN(nn.Module):
     sizes: dict
 
     @nn.compact
-    def __call__(self, nodes: jnp.ndarray, edges: jnp.ndarray, globals: jnp.ndarray) -> jnp.ndarray:  # noqa: A002
+    def __call__(self, nodes: jnp.ndarray, edges: jnp.ndarray, globals: jnp.ndarray) -> jnp.ndarray:
         y = GraphNetwork(self.edge_index, 1, **self.sizes, name="graph")(nodes, edges, globals)
         return y.reshape(-1, self.n_legs, 3)
 
 
-def build(dims: ModelDims, edge: int = 64, node: int = 16, glob: int = 16, mlp_layers: int = 2,
-          steps: int = 5) -> GNN:
+def build(
+    dims: ModelDims,
+    edge: int = 64,
+    node: int = 16,
+    glob: int = 16,
+    mlp_layers: int = 2,
+    steps: int = 5,
+) -> GNN:
     sizes = dict(edge=edge, node=node, glob=glob, mlp_layers=mlp_layers, steps=steps)
     return GNN(dims.n_legs, schema.body_graph(dims.n_legs, dims.variant).edges(), sizes)

@@ -43,11 +43,22 @@ class GraphNetwork(nn.Module):
         u = LatentMLP(self.glob, mlp, name="enc_global")(glob)
         for k in range(self.steps):
             n, n_e, n_v = e.shape[0], e.shape[1], v.shape[1]
-            e = e + LatentMLP(self.edge, mlp, name=f"edge{k}")(jnp.concatenate(
-                [e, v[:, senders], v[:, receivers], jnp.broadcast_to(u[:, None], (n, n_e, u.shape[-1]))], -1))
+            e = e + LatentMLP(self.edge, mlp, name=f"edge{k}")(
+                jnp.concatenate(
+                    [
+                        e,
+                        v[:, senders],
+                        v[:, receivers],
+                        jnp.broadcast_to(u[:, None], (n, n_e, u.shape[-1])),
+                    ],
+                    -1,
+                )
+            )
             agg = jnp.einsum("ve,ned->nvd", sum_incident, e)
-            v = v + LatentMLP(self.node, mlp, name=f"node{k}")(jnp.concatenate(
-                [v, agg, jnp.broadcast_to(u[:, None], (n, n_v, u.shape[-1]))], -1))
+            v = v + LatentMLP(self.node, mlp, name=f"node{k}")(
+                jnp.concatenate([v, agg, jnp.broadcast_to(u[:, None], (n, n_v, u.shape[-1]))], -1)
+            )
             u = u + LatentMLP(self.glob, mlp, name=f"global{k}")(
-                jnp.concatenate([u, e.sum(1), v.sum(1)], -1))
+                jnp.concatenate([u, e.sum(1), v.sum(1)], -1)
+            )
         return nn.Dense(self.n_out, name="out")(LatentMLP(self.edge, mlp, name="dec")(e))

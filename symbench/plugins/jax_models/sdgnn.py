@@ -9,7 +9,7 @@ from __future__ import annotations
 import flax.linen as nn
 import jax.numpy as jnp
 
-from symbench.core.model_dims import ModelDims
+from symbench import ModelDims
 from symbench.plugins.graphs import star_graph
 from symbench.plugins.jax_models.layers import GraphNetwork
 
@@ -23,10 +23,19 @@ class SDGNN(nn.Module):
         edges, types = star_graph(self.n_legs)
         n = x.shape[0]
         nodes = jnp.broadcast_to(jnp.asarray(types, x.dtype), (n, *types.shape))
-        return GraphNetwork(edges, 3, **self.sizes, name="graph")(nodes, x, jnp.ones((n, 1), x.dtype))
+        return GraphNetwork(edges, 3, **self.sizes, name="graph")(
+            nodes, x, jnp.ones((n, 1), x.dtype)
+        )
 
 
-def build(dims: ModelDims, edge: int = 64, node: int = 16, glob: int = 16, mlp_layers: int = 2,
-          steps: int = 2) -> SDGNN:
-    return SDGNN(dims.n_legs, dict(edge=edge, node=node, glob=glob, mlp_layers=mlp_layers,
-                                   steps=steps))
+def build(
+    dims: ModelDims,
+    edge: int = 64,
+    node: int = 16,
+    glob: int = 16,
+    mlp_layers: int = 2,
+    steps: int = 2,
+) -> SDGNN:
+    return SDGNN(
+        dims.n_legs, dict(edge=edge, node=node, glob=glob, mlp_layers=mlp_layers, steps=steps)
+    )

@@ -9,7 +9,7 @@ from __future__ import annotations
 import flax.linen as nn
 import jax.numpy as jnp
 
-from symbench.core.model_dims import ModelDims
+from symbench import ModelDims
 from symbench.plugins.jax_models.layers import LatentMLP
 
 
@@ -24,7 +24,8 @@ class SDNN(nn.Module):
         for k in range(self.steps):
             total = jnp.broadcast_to(h.sum(axis=1, keepdims=True), h.shape)
             h = h + LatentMLP(self.latent, self.mlp_layers, name=f"proc{k}")(
-                jnp.concatenate([h, total], axis=-1))
+                jnp.concatenate([h, total], axis=-1)
+            )
         h = LatentMLP(self.latent, self.mlp_layers, name="dec")(h)
         return nn.Dense(3, name="out")(h)
 

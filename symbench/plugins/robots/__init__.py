@@ -9,8 +9,7 @@ from __future__ import annotations
 import tomllib
 from pathlib import Path
 
-from symbench.core.entries import RobotEntry
-from symbench.core.hookspecs import hookimpl
+from symbench import RobotEntry, hookimpl
 
 ROBOTS_DIR = Path(__file__).resolve().parents[3] / "robots"
 

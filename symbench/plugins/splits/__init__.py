@@ -1,14 +1,12 @@
 """Built-in splits: iid, unseen-heading, unseen-rotation and fraction-F (sample efficiency).
 
-Registered through the `symbench_splits` hook exactly as a third-party split would be; the
-logic lives in symbench.core.splits so that its helpers are shared with plugins.
+Registered through the `symbench_splits` hook exactly as a third-party split would be.
 """
 
 from __future__ import annotations
 
-from symbench.core import splits
-from symbench.core.entries import SplitEntry
-from symbench.core.hookspecs import hookimpl
+from symbench import SplitEntry, hookimpl
+from symbench.plugins.splits import assign as splits
 
 FRACTIONS = (0.1, 0.25, 0.5, 0.75)
 
@@ -17,14 +15,23 @@ FRACTIONS = (0.1, 0.25, 0.5, 0.75)
 def symbench_splits() -> list[SplitEntry]:
     entries = [
         SplitEntry("iid", splits.iid, "held-out trajectories of the same scenario distribution"),
-        SplitEntry("unseen-heading", splits.unseen_heading,
-                   "train on half of the slope headings, test on the others (gravity-axis invariance)"),
-        SplitEntry("unseen-rotation", splits.unseen_rotation,
-                   "train on initial yaws in one fundamental sector, test on the rest (equivariance)"),
+        SplitEntry(
+            "unseen-heading",
+            splits.unseen_heading,
+            "train on half of the slope headings, test on the others (gravity-axis invariance)",
+        ),
+        SplitEntry(
+            "unseen-rotation",
+            splits.unseen_rotation,
+            "train on initial yaws in one fundamental sector, test on the rest (equivariance)",
+        ),
     ]
     entries += [
-        SplitEntry(f"fraction-{share:g}", splits.fraction(share),
-                   f"iid with {share:g} of its training trajectories (sample efficiency)")
+        SplitEntry(
+            f"fraction-{share:g}",
+            splits.fraction(share),
+            f"iid with {share:g} of its training trajectories (sample efficiency)",
+        )
         for share in FRACTIONS
     ]
     return entries

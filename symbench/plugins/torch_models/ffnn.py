@@ -7,7 +7,7 @@ import math
 import torch
 from torch import nn
 
-from symbench.core.model_dims import ModelDims
+from symbench import ModelDims
 from symbench.plugins.torch_models.layers import LatentMLP
 
 

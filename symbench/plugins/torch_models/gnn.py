@@ -5,8 +5,7 @@ from __future__ import annotations
 import torch
 from torch import nn
 
-from symbench.core import schema
-from symbench.core.model_dims import ModelDims
+from symbench import ModelDims, schema
 from symbench.plugins.torch_models.layers import GraphNetwork
 
 
@@ -18,10 +17,18 @@ class GNN(nn.Module):
         fin = (dims.shape("nodes")[-1], dims.shape("edges")[-1], dims.shape("globals")[-1])
         self.graph = GraphNetwork(fin, graph.edges(), 1, **sizes)
 
-    def forward(self, nodes: torch.Tensor, edges: torch.Tensor, globals: torch.Tensor) -> torch.Tensor:  # noqa: A002
+    def forward(
+        self, nodes: torch.Tensor, edges: torch.Tensor, globals: torch.Tensor
+    ) -> torch.Tensor:
         return self.graph(nodes, edges, globals).reshape(-1, self.n_legs, 3)
 
 
-def build(dims: ModelDims, edge: int = 64, node: int = 16, glob: int = 16, mlp_layers: int = 2,
-          steps: int = 5) -> GNN:
+def build(
+    dims: ModelDims,
+    edge: int = 64,
+    node: int = 16,
+    glob: int = 16,
+    mlp_layers: int = 2,
+    steps: int = 5,
+) -> GNN:
     return GNN(dims, edge=edge, node=node, glob=glob, mlp_layers=mlp_layers, steps=steps)

@@ -33,8 +33,17 @@ class GraphNetwork(nn.Module):
     residually. The decoder reads every edge: edges carry the outputs.
     """
 
-    def __init__(self, dims_in: tuple[int, int, int], edge_index: np.ndarray, n_out: int,
-                 edge: int, node: int, glob: int, mlp_layers: int, steps: int):
+    def __init__(
+        self,
+        dims_in: tuple[int, int, int],
+        edge_index: np.ndarray,
+        n_out: int,
+        edge: int,
+        node: int,
+        glob: int,
+        mlp_layers: int,
+        steps: int,
+    ):
         super().__init__()
         fn, fe, fg = dims_in
         senders, receivers = edge_index[:, 0], edge_index[:, 1]
@@ -57,9 +66,15 @@ class GraphNetwork(nn.Module):
         sum_incident = self.incidence.to(e.dtype)
         for k in range(self.steps):
             n_e, n_v = e.shape[1], v.shape[1]
-            e = e + getattr(self, f"edge{k}")(torch.cat(
-                [e, v[:, self.senders], v[:, self.receivers], u[:, None].expand(-1, n_e, -1)], -1))
+            e = e + getattr(self, f"edge{k}")(
+                torch.cat(
+                    [e, v[:, self.senders], v[:, self.receivers], u[:, None].expand(-1, n_e, -1)],
+                    -1,
+                )
+            )
             agg = torch.einsum("ve,ned->nvd", sum_incident, e)
-            v = v + getattr(self, f"node{k}")(torch.cat([v, agg, u[:, None].expand(-1, n_v, -1)], -1))
+            v = v + getattr(self, f"node{k}")(
+                torch.cat([v, agg, u[:, None].expand(-1, n_v, -1)], -1)
+            )
             u = u + getattr(self, f"global{k}")(torch.cat([u, e.sum(1), v.sum(1)], -1))
         return self.out(self.dec(e))

@@ -9,7 +9,7 @@ from __future__ import annotations
 import torch
 from torch import nn
 
-from symbench.core.model_dims import ModelDims
+from symbench import ModelDims
 from symbench.plugins.graphs import star_graph
 from symbench.plugins.torch_models.layers import GraphNetwork
 
@@ -27,7 +27,20 @@ class SDGNN(nn.Module):
         return self.graph(nodes, x, x.new_ones(n, 1))
 
 
-def build(dims: ModelDims, edge: int = 64, node: int = 16, glob: int = 16, mlp_layers: int = 2,
-          steps: int = 2) -> SDGNN:
-    return SDGNN(dims.n_legs, dims.shape("x")[-1], edge=edge, node=node, glob=glob,
-                 mlp_layers=mlp_layers, steps=steps)
+def build(
+    dims: ModelDims,
+    edge: int = 64,
+    node: int = 16,
+    glob: int = 16,
+    mlp_layers: int = 2,
+    steps: int = 2,
+) -> SDGNN:
+    return SDGNN(
+        dims.n_legs,
+        dims.shape("x")[-1],
+        edge=edge,
+        node=node,
+        glob=glob,
+        mlp_layers=mlp_layers,
+        steps=steps,
+    )

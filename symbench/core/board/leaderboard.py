@@ -1,0 +1,184 @@
+"""Aggregate result records into leaderboard tables (Markdown + CSV) and plots.
+
+Records are grouped by robot, split, model and backend; metrics are averaged over seeds with
+their standard deviation, and each (robot, split) table is ranked by test torque RMSE.
+Records from different dataset versions are never mixed: comparing numbers from two
+datasets would be meaningless, so the aggregation refuses and says why. Schema-1 (unsealed)
+records are still shown, so that old boards can be read; publishing refuses them. Output file
+names come from record fields that the schema restricts to safe identifiers.
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from collections.abc import Iterable
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from symbench.core.board.plots import sample_efficiency_png
+from symbench.core.board.summary import headline
+from symbench.core.common.atomic import write_text_atomic
+from symbench.core.common.errors import SymbenchError
+from symbench.core.runs.results import RecordV1, read_display_record
+
+MIN_SEEDS = 3
+RANK_METRIC = ("torque-error", "rmse")
+# (evaluator, metric) pairs shown in the tables when present, with their column names
+COLUMNS = {
+    ("torque-error", "rmse"): "rmse_Nm",
+    ("torque-error", "nrmse"): "nrmse",
+    ("equivariance", "max_rel_error"): "equiv_err",
+    ("invariance", "max_rel_change"): "invar_change",
+    ("closed-loop", "success_rate"): "cl_success",
+    ("closed-loop", "time_to_failure_s"): "cl_ttf_s",
+    ("closed-loop", "pd_success_rate"): "cl_pd_success",
+    ("closed-loop", "pd_time_to_failure_s"): "cl_pd_ttf_s",
+}
+
+
+def load_records(folder: Path) -> list[tuple[Path, RecordV1]]:
+    """Every *.json record in `folder` (not its subfolders, which hold checkpoints),
+    validated and, from schema 2 on, matching its seal; sorted by path for reproducibility."""
+    paths = sorted(Path(folder).glob("*.json"))
+    if not paths:
+        raise SymbenchError(f"no result records (*.json) under {folder}")
+    return [(p, read_display_record(p)) for p in paths]
+
+
+def check_consistent(records: Iterable[tuple[Path, RecordV1]]) -> None:
+    """One dataset content hash per robot, or an error."""
+    hashes: dict[str, dict[str, Path]] = defaultdict(dict)
+    for path, r in records:
+        hashes[r.robot].setdefault(r.dataset.content_hash, path)
+    for robot, by_hash in hashes.items():
+        if len(by_hash) > 1:
+            examples = ", ".join(f"{p.name} ({h[:12]}...)" for h, p in by_hash.items())
+            raise SymbenchError(
+                f"records for {robot} come from {len(by_hash)} different datasets "
+                f"({examples}); aggregate records of one dataset version only"
+            )
+
+
+def _flat(record: RecordV1) -> dict:
+    row = {
+        "robot": record.robot,
+        "split": record.split,
+        "model": record.model.name,
+        "variant": record.model.variant,
+        "backend": record.model.backend,
+        "seed": record.seed,
+        "dataset": record.dataset.id,
+        "parameters": record.model.parameters,
+        "epochs": float(record.training.epochs),
+    }
+    for (evaluator, metric), column in COLUMNS.items():
+        value = record.metrics.get(evaluator, {}).get(metric)
+        row[column] = float(value) if isinstance(value, (int, float)) else np.nan
+    return row
+
+
+def aggregate(records: list[tuple[Path, RecordV1]]) -> pd.DataFrame:
+    """Mean and standard deviation over seeds per (robot, split, model, variant, backend),
+    ranked."""
+    check_consistent(records)
+    runs = pd.DataFrame([_flat(r) for _, r in records])
+    duplicate = runs.duplicated(["robot", "split", "model", "variant", "backend", "seed"])
+    if duplicate.any():
+        first = runs[duplicate].iloc[0]
+        raise SymbenchError(
+            f"two records for the same run: {first['robot']} {first['split']} "
+            f"{first['model']} {first['backend']} seed {first['seed']}"
+        )
+    keys = ["robot", "split", "model", "variant", "backend"]
+    missing = runs.rmse_Nm.isna()
+    if missing.any():
+        names = ", ".join(sorted(str(p.name) for (p, _), m in zip(records, missing) if m)[:5])
+        raise SymbenchError(
+            f"records without a torque-error RMSE cannot be ranked ({names}); "
+            "run them with the torque-error evaluator"
+        )
+    # epochs show when the stopping rule ended a training early (an under-trained model)
+    metrics = [c for c in COLUMNS.values() if runs[c].notna().any()] + ["epochs"]
+    grouped = runs.groupby(keys, sort=True)
+    table = grouped.agg(
+        seeds=("seed", "nunique"), parameters=("parameters", "first"), dataset=("dataset", "first")
+    )
+    for m in metrics:
+        table[f"{m}_mean"] = grouped[m].mean()
+        table[f"{m}_std"] = grouped[m].std(ddof=1)
+    table = table.reset_index()
+    table["rank"] = table.groupby(["robot", "split"])["rmse_Nm_mean"].rank(method="min").astype(int)
+    return table.sort_values(["robot", "split", "rank", "model", "variant", "backend"]).reset_index(
+        drop=True
+    )
+
+
+def _cell(mean: float, std: float) -> str:
+    if np.isnan(mean):
+        return "-"
+    return f"{mean:.4g}" if np.isnan(std) else f"{mean:.4g} ± {std:.2g}"
+
+
+def markdown(table: pd.DataFrame, robot: str) -> str:
+    """One robot's leaderboard: a section per split, rows ranked by RMSE."""
+    metrics = [c[: -len("_mean")] for c in table.columns if c.endswith("_mean")]
+    lines = [f"# {robot}", ""]
+    for split, part in table[table.robot == robot].groupby("split", sort=True):
+        lines += [
+            f"## {split}",
+            "",
+            "| rank | model | variant | backend | seeds | " + " | ".join(metrics) + " |",
+            "|---|---|---|---|---|" + "---|" * len(metrics),
+        ]
+        for _, row in part.iterrows():
+            cells = [_cell(row[f"{m}_mean"], row[f"{m}_std"]) for m in metrics]
+            flag = "" if row.seeds >= MIN_SEEDS else f" (<{MIN_SEEDS})"
+            lines.append(
+                f"| {row['rank']} | {row.model} | {row.variant} | {row.backend} "
+                f"| {row.seeds}{flag} | " + " | ".join(cells) + " |"
+            )
+        lines.append("")
+    return "\n".join(lines)
+
+
+def sample_efficiency_plot(table: pd.DataFrame, robot: str, path: Path) -> bool:
+    """Test RMSE against training fraction, one line per model; False when no fractions.
+    `iid` is the same split with all of its training trajectories, so it is the point at 1."""
+    rows = table[table.robot == robot].copy()
+    fractions = rows.split.str.startswith("fraction-")
+    if not fractions.any():
+        return False
+    rows = rows[fractions | (rows.split == "iid")]
+    rows["fraction"] = rows.split.str.removeprefix("fraction-").replace("iid", "1").astype(float)
+    curves = {}
+    for (model, variant, backend), part in rows.groupby(["model", "variant", "backend"], sort=True):
+        part = part.sort_values("fraction")
+        curves[f"{model} ({variant}, {backend})"] = (
+            part.fraction.tolist(),
+            part.rmse_Nm_mean.tolist(),
+            part.rmse_Nm_std.fillna(0).tolist(),
+        )
+    sample_efficiency_png(curves, f"{robot}: sample efficiency", path)
+    return True
+
+
+def write_leaderboard(results: Path, out: Path) -> list[Path]:
+    """Aggregate the records under `results` into tables and plots under `out`."""
+    table = aggregate(load_records(results))
+    written = []
+    csv = out / "leaderboard.csv"
+    write_text_atomic(csv, table.to_csv(index=False, float_format="%.6g"))
+    written.append(csv)
+    summary = out / "summary.md"
+    write_text_atomic(summary, headline(table))
+    written.append(summary)
+    for robot in sorted(table.robot.unique()):
+        md = out / f"{robot}.md"
+        write_text_atomic(md, markdown(table, robot))
+        written.append(md)
+        png = out / f"{robot}-sample-efficiency.png"
+        if sample_efficiency_plot(table, robot, png):
+            written.append(png)
+    return written

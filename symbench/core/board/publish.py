@@ -1,0 +1,122 @@
+"""Publishing: checked records merged into a board (leaderboards/) and its tables rebuilt.
+
+Every record that would be on the board afterwards, incoming and already published, must
+pass `RecordChecks` (sealed, committed tree, accepted preset, registered names, the standard
+dataset's hash); each run group (robot, split, model, variant, backend) needs MIN_SEEDS seeds;
+`verify` re-runs a seeded sample of the incoming records first. Only then is the new board
+built in a staging folder beside it (records and tables) and swapped in by two renames, so a
+refusal, or a failure half-way, leaves the board exactly as it was.
+
+The CLI accepts the `small` and `paper` presets only. The Python API takes the accepted
+presets as a parameter so that tests can publish records of the seconds-long `smoke` preset;
+those records still pass every other check, on a real smoke dataset.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import tempfile
+from collections import defaultdict
+from collections.abc import Callable, Collection, Sequence
+from pathlib import Path
+
+from symbench.core.board.leaderboard import MIN_SEEDS, write_leaderboard
+from symbench.core.board.publish_checks import RecordChecks
+from symbench.core.common.errors import SymbenchError
+from symbench.core.runs.results import ResultRecord, write_record
+
+RECORDS = "records"
+PUBLISHED_PRESETS = ("small", "paper")
+
+
+def _group(r: ResultRecord) -> tuple[str, ...]:
+    return (r.robot, r.split, r.model.name, r.model.variant, r.model.backend)
+
+
+def check_merge(
+    published: list[tuple[Path, ResultRecord]], incoming: list[tuple[Path, ResultRecord]]
+) -> None:
+    """Refuse a different record under a published key, or a group left with too few seeds."""
+    merged = {r.key(): r for _, r in published}
+    for path, record in incoming:
+        old = merged.get(record.key())
+        if old is not None and old != record:
+            raise SymbenchError(
+                f"{path}: a different record for {record.key()} is already "
+                "published; remove it from the board's records first"
+            )
+        merged[record.key()] = record
+    seeds: dict[tuple, set[int]] = defaultdict(set)
+    for record in merged.values():
+        seeds[_group(record)].add(record.seed)
+    for path, record in incoming:
+        count = len(seeds[_group(record)])
+        if count < MIN_SEEDS:
+            raise SymbenchError(
+                f"{path}: {' / '.join(_group(record))} would have {count} "
+                f"seed(s); publish at least {MIN_SEEDS} seeds of a run together"
+            )
+
+
+def verify_sample(paths: Sequence[Path], n: int, seed: int, report: Callable[[str], None]) -> None:
+    """Re-run `n` of `paths` chosen with `seed`; refuse on the first that does not reproduce."""
+    from symbench.core.runs.verify import first_problem, sample, verify_record
+
+    chosen = sample(paths, n, seed)
+    report(
+        f"verifying {len(chosen)} of {len(paths)} records (sample seed {seed}): "
+        + ", ".join(str(p) for p in chosen)
+    )
+    with tempfile.TemporaryDirectory(prefix="symbench-verify-") as workdir:
+        for path in chosen:
+            result = verify_record(path, Path(workdir))
+            if not result.agree:
+                raise SymbenchError(first_problem(result))
+            report(f"{path}: all {len(result.checks)} values reproduce ({result.seconds:.0f} s)")
+
+
+def swap_in(board: Path, build: Callable[[Path], list[Path]]) -> list[Path]:
+    """Build a copy of `board` in a staging folder beside it, then put the copy in its place;
+    returns the files `build` wrote, as paths in the board."""
+    board = Path(board)
+    board.parent.mkdir(parents=True, exist_ok=True)
+    staging = Path(tempfile.mkdtemp(prefix=f".{board.name}.staging-", dir=board.parent))
+    try:
+        staged = staging / board.name
+        if board.exists():
+            shutil.copytree(board, staged, symlinks=True)
+        written = [board / p.relative_to(staged) for p in build(staged)]
+        if board.exists():
+            os.rename(board, staging / "previous")
+        os.rename(staged, board)
+        return written
+    finally:
+        shutil.rmtree(staging, ignore_errors=True)
+
+
+def publish(
+    paths: Sequence[Path],
+    board: Path,
+    presets: Collection[str] = PUBLISHED_PRESETS,
+    verify: int = 0,
+    verify_seed: int = 0,
+    report: Callable[[str], None] = lambda message: None,
+) -> list[Path]:
+    """Check `paths` (and the records already on `board`), merge them into `board`/records and
+    rebuild the tables; returns the files written. Nothing is written when anything fails."""
+    checks = RecordChecks(presets)
+    incoming = [(Path(p), checks.check(Path(p))) for p in paths]
+    published = [(p, checks.check(p)) for p in sorted((Path(board) / RECORDS).glob("*.json"))]
+    check_merge(published, incoming)
+    if verify:
+        verify_sample([p for p, _ in incoming], verify, verify_seed, report)
+
+    def build(staged: Path) -> list[Path]:
+        folder = staged / RECORDS
+        written = [folder / f"{record.key()}.json" for _, record in incoming]
+        for path, (_, record) in zip(written, incoming):
+            write_record(record, path)
+        return written + write_leaderboard(folder, staged)
+
+    return swap_in(Path(board), build)

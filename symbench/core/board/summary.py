@@ -1,0 +1,109 @@
+"""The leaderboard's headline page: every model side by side, one row per robot and split.
+
+The per-robot pages rank models within one split; the claims a reader checks (does a model
+generalize to unseen rotations, does it degrade as legs increase, does it keep the robot on
+the wall) need the models in columns across splits and robots, so this page puts them there.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+SPLIT_ORDER = ("iid", "unseen-heading", "unseen-rotation")
+
+
+def _split_key(split: str) -> tuple[int, float, str]:
+    """iid and the unseen splits first, then the fractions in increasing order."""
+    if split in SPLIT_ORDER:
+        return (0, SPLIT_ORDER.index(split), split)
+    if split.startswith("fraction-"):
+        return (1, float(split.removeprefix("fraction-")), split)
+    return (2, 0.0, split)
+
+
+def _labels(table: pd.DataFrame) -> pd.Series:
+    """The model's name, with variant and backend when a model appears with several."""
+    combos = table.groupby("model")[["variant", "backend"]].nunique().max(axis=1)
+    return table.apply(
+        lambda r: r.model if combos[r.model] == 1 else f"{r.model} ({r.variant}, {r.backend})",
+        axis=1,
+    )
+
+
+def _cell(mean: float, std: float, digits: int = 3) -> str:
+    if np.isnan(mean):
+        return "-"
+    return f"{mean:.{digits}g}" if np.isnan(std) else f"{mean:.{digits}g} ± {std:.2g}"
+
+
+def _column_order(table: pd.DataFrame) -> list[str]:
+    """Models by their mean rank over all (robot, split) groups, then by name."""
+    mean_rank = table.groupby("label")["rank"].mean()
+    return sorted(mean_rank.index, key=lambda label: (mean_rank[label], label))
+
+
+def error_section(table: pd.DataFrame, metric: str, title: str) -> list[str]:
+    """One error metric per robot and split, models in columns."""
+    columns = _column_order(table)
+    lines = [
+        f"## {title}",
+        "",
+        "| robot | split | " + " | ".join(columns) + " |",
+        "|---|---|" + "---|" * len(columns),
+    ]
+    groups = table.groupby(["robot", "split"], sort=False)
+    for robot, split in sorted(groups.groups, key=lambda k: (k[0], _split_key(k[1]))):
+        part = groups.get_group((robot, split)).set_index("label")
+        cells = [
+            _cell(part.at[c, f"{metric}_mean"], part.at[c, f"{metric}_std"])
+            if c in part.index
+            else "-"
+            for c in columns
+        ]
+        lines.append(f"| {robot} | {split} | " + " | ".join(cells) + " |")
+    return lines + [""]
+
+
+def closed_loop_section(table: pd.DataFrame) -> list[str]:
+    """Seconds the learned model kept the robot on its reference, alone and with small PD."""
+    if "cl_ttf_s_mean" not in table or table.cl_ttf_s_mean.isna().all():
+        return []
+    rows = table[table.cl_ttf_s_mean.notna()]
+    columns = _column_order(rows)
+    lines = [
+        "## Closed loop: time to failure (s), model alone / with small PD, mean over seeds",
+        "",
+        "| robot | split | " + " | ".join(columns) + " |",
+        "|---|---|" + "---|" * len(columns),
+    ]
+    for (robot, split), part in rows.groupby(["robot", "split"], sort=True):
+        part = part.set_index("label")
+        cells = [
+            f"{part.at[c, 'cl_ttf_s_mean']:.3g} / {part.at[c, 'cl_pd_ttf_s_mean']:.3g}"
+            if c in part.index
+            else "-"
+            for c in columns
+        ]
+        lines.append(f"| {robot} | {split} | " + " | ".join(cells) + " |")
+    return lines + [""]
+
+
+def headline(table: pd.DataFrame) -> str:
+    """The Markdown of summary.md from an aggregated table (see `leaderboard.aggregate`)."""
+    table = table.assign(label=_labels(table))
+    seeds = sorted(int(s) for s in table.seeds.unique())
+    lines = [
+        "# Leaderboard summary",
+        "",
+        f"Seeds per run group: {', '.join(map(str, seeds))}. Rank within each robot and "
+        "split is by mean test RMSE; the per-robot pages have every metric.",
+        "",
+    ]
+    rmse = error_section(table, "rmse_Nm", "Test torque RMSE (N m), mean ± std over seeds")
+    nrmse = error_section(
+        table,
+        "nrmse",
+        "Normalized test RMSE (RMSE / std of the test torques), comparable across robots",
+    )
+    return "\n".join(lines + rmse + nrmse + closed_loop_section(table))

@@ -1,0 +1,142 @@
+"""What the collection hooks return: one small record per registered thing.
+
+Entries are plain frozen dataclasses so that listing them (`symbench list`) never has to
+build a network or load a robot. The callables are invoked only when the thing is used, but
+every field is checked when the entry is made: a misspelt view, variant or backend fails in
+the plugin's own hook, where the plugin host reports it under the plugin's name, instead of
+deep inside a training run.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from collections.abc import Callable
+from dataclasses import dataclass, fields
+from pathlib import Path
+from typing import Any
+
+from symbench.core.common.errors import SymbenchError
+
+# The vocabulary shared by plugins and the core (the data schema keys its layouts by these).
+BACKENDS = ("torch", "jax")
+VIEWS = ("leg_grouped", "vector", "body_graph")
+VARIANTS = ("acc", "next")
+
+_NAME = re.compile(r"[A-Za-z0-9][A-Za-z0-9_.+-]*")
+
+
+class InvalidEntryError(SymbenchError, ValueError):
+    """An entry whose fields cannot work; raised when the entry is made."""
+
+
+def _check_name(kind: str, name: object) -> None:
+    if not isinstance(name, str) or not _NAME.fullmatch(name):
+        raise InvalidEntryError(
+            f"{kind} name {name!r} is not a name: use letters, digits and . _ + - "
+            "(no spaces or slashes)"
+        )
+
+
+def _check_choice(kind: str, name: str, field: str, value: object, valid: tuple) -> None:
+    if value not in valid:
+        raise InvalidEntryError(
+            f"{kind} '{name}': {field} {value!r} is not one of {', '.join(valid)}"
+        )
+
+
+def _check_callable(kind: str, name: str, field: str, value: object) -> None:
+    if not callable(value):
+        raise InvalidEntryError(
+            f"{kind} '{name}': {field} must be callable (a function or "
+            f"Lazy('module:attribute')), got {type(value).__name__}"
+        )
+
+
+@dataclass(frozen=True)
+class ModelEntry:
+    """A network for one backend, the view it consumes and the symmetry it claims.
+
+    `build(dims, **hyper)` returns the backend's network; `equivariant` says whether the
+    model claims equivariance under the robot's symmetry group (checked by the kit).
+    """
+
+    name: str
+    backend: str
+    view: str
+    variant: str
+    equivariant: bool
+    build: Callable[..., Any]
+    learning_rate: float = 1e-3
+    description: str = ""
+
+    def __post_init__(self) -> None:
+        _check_name("model", self.name)
+        _check_choice("model", self.name, "backend", self.backend, BACKENDS)
+        _check_choice("model", self.name, "view", self.view, VIEWS)
+        _check_choice("model", self.name, "variant", self.variant, VARIANTS)
+        if not isinstance(self.equivariant, bool):
+            raise InvalidEntryError(f"model '{self.name}': equivariant must be True or False")
+        _check_callable("model", self.name, "build", self.build)
+        rate = self.learning_rate
+        if isinstance(rate, bool) or not isinstance(rate, (int, float)) or not 0 < rate < 1:
+            raise InvalidEntryError(
+                f"model '{self.name}': learning_rate must be a number in (0, 1), got {rate!r}"
+            )
+
+
+@dataclass(frozen=True)
+class RobotEntry:
+    """A robot whose spec (robot.toml and README.md) lives in `spec_dir`."""
+
+    name: str
+    spec_dir: Path
+    description: str = ""
+
+    def __post_init__(self) -> None:
+        _check_name("robot", self.name)
+        if not isinstance(self.spec_dir, (str, os.PathLike)):
+            raise InvalidEntryError(
+                f"robot '{self.name}': spec_dir must be a path, got {type(self.spec_dir).__name__}"
+            )
+
+
+@dataclass(frozen=True)
+class EvaluatorEntry:
+    """An evaluator: `evaluate(context)` returns a dict of metrics."""
+
+    name: str
+    evaluate: Callable[..., dict]
+    description: str = ""
+
+    def __post_init__(self) -> None:
+        _check_name("evaluator", self.name)
+        _check_callable("evaluator", self.name, "evaluate", self.evaluate)
+
+
+@dataclass(frozen=True)
+class SplitEntry:
+    """A split: `assign(context)` labels each trajectory train, val, test or unused.
+
+    `context` is a `symbench.SplitContext` (scenarios, trajectory ids, sample counts, the
+    robot's rotation order and the seed); see docs/writing-plugins.md.
+    """
+
+    name: str
+    assign: Callable[..., Any]
+    description: str = ""
+
+    def __post_init__(self) -> None:
+        _check_name("split", self.name)
+        _check_callable("split", self.name, "assign", self.assign)
+
+
+def describe(entry: Any) -> dict[str, Any]:
+    """The entry's plain fields (no callables), JSON-ready."""
+    out = {}
+    for f in fields(entry):
+        value = getattr(entry, f.name)
+        if callable(value):
+            continue
+        out[f.name] = str(value) if isinstance(value, Path) else value
+    return out

@@ -1,0 +1,325 @@
+"""Robot specs: read `robots/<name>/robot.toml` into a frozen, validated `RobotSpec`.
+
+The spec is the single source of a robot's geometry, masses, limits, magnet, gait defaults
+and symmetry; the MJCF (symbench.core.sim.model) and the leg frames used by the views are
+both derived from it, so they cannot disagree. Legs are numbered counter-clockwise seen from
+above; leg frame i sits at the coxa joint in the zero configuration, z along the base z, x
+along the coxa's zero direction.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import tomllib
+from dataclasses import dataclass
+from functools import cached_property
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from symbench.core.common.errors import SymbenchError
+from symbench.core.symmetry.groups import LegGroup, from_spec
+from symbench.core.symmetry.legs import check_geometry
+
+JOINT_NAMES = ("coxa", "femur", "tibia")
+
+
+@dataclass(frozen=True)
+class LegSpec:
+    """One leg (all legs are identical): links, masses, inertias and joint ranges."""
+
+    lengths: dict[str, float]  # coxa, femur, tibia, foot (m)
+    masses: dict[str, float]  # coxa, femur, tibia (kg)
+    inertias: dict[str, tuple[float, float, float]]  # principal, x along the link
+    joint_lower: tuple[float, float, float]
+    joint_upper: tuple[float, float, float]
+    joint_damping: float
+    ankle_masses: tuple[float, float, float]
+    ankle_inertias: tuple[tuple[float, float, float], ...]
+    ankle_lower: tuple[float, float, float]
+    ankle_upper: tuple[float, float, float]
+    ankle_damping: float
+    ankle_stiffness: float
+    sole_radius: float
+    stance: tuple[float, float, float]  # nominal (coxa, femur, tibia) angles
+
+
+@dataclass(frozen=True)
+class MagnetSpec:
+    force: float  # N
+    friction: float
+    contact_distance: float  # m
+
+
+@dataclass(frozen=True)
+class ControlSpec:
+    torque_limit: float  # N m, the same for the three joints
+    kp: float
+    kd: float
+    timestep: float  # s, simulation and control period
+
+
+@dataclass(frozen=True)
+class GaitSpec:
+    release: float  # s, magnet off, foot still down
+    swing: float  # s
+    touchdown: float  # s, magnet on, foot settling
+    swing_height: float  # m
+    step_length: float  # m
+
+    @property
+    def step_duration(self) -> float:
+        return self.release + self.swing + self.touchdown
+
+
+@dataclass(frozen=True)
+class RobotSpec:
+    name: str
+    n_legs: int
+    description: str
+    base_mass: float
+    base_inertia: tuple[float, float, float]
+    base_semi_axes: tuple[float, float, float]
+    mount_radius: float
+    mount_z: float
+    mount_angles_deg: tuple[float, ...]
+    coxa_yaw_deg: tuple[float, ...]
+    leg: LegSpec
+    magnet: MagnetSpec
+    control: ControlSpec
+    gait: GaitSpec
+    symmetry_kind: str
+    symmetry_shift: int
+    symmetry_mirror_offset: int
+    canonical: str  # canonical JSON of the parsed toml, the source of spec_hash
+
+    @cached_property
+    def group(self) -> LegGroup:
+        return from_spec(
+            self.n_legs, self.symmetry_kind, self.symmetry_shift, self.symmetry_mirror_offset
+        )
+
+    @property
+    def symmetry_angle_deg(self) -> float:
+        """Base rotation that a shift by `symmetry_shift` legs corresponds to."""
+        return 360.0 * self.symmetry_shift / self.n_legs
+
+    def leg_rotations(self) -> np.ndarray:
+        """(n_legs, 3, 3) R_b_li: columns are the leg-frame axes in the base frame."""
+        yaw = np.radians(np.asarray(self.coxa_yaw_deg))
+        c, s = np.cos(yaw), np.sin(yaw)
+        rot = np.zeros((self.n_legs, 3, 3))
+        rot[:, 0, 0], rot[:, 0, 1], rot[:, 1, 0], rot[:, 1, 1] = c, -s, s, c
+        rot[:, 2, 2] = 1.0
+        return rot
+
+    def leg_origins(self) -> np.ndarray:
+        """(n_legs, 3) coxa joints (leg-frame origins) in the base frame."""
+        ang = np.radians(np.asarray(self.mount_angles_deg))
+        r = self.mount_radius
+        return np.stack([r * np.cos(ang), r * np.sin(ang), np.full(self.n_legs, self.mount_z)], 1)
+
+    def torque_limits(self) -> np.ndarray:
+        """(3,) N m for coxa, femur, tibia."""
+        return np.full(3, self.control.torque_limit)
+
+    def joint_limits(self) -> tuple[np.ndarray, np.ndarray]:
+        return np.asarray(self.leg.joint_lower), np.asarray(self.leg.joint_upper)
+
+    def spec_hash(self) -> str:
+        return hashlib.sha256(self.canonical.encode()).hexdigest()
+
+    @property
+    def total_mass(self) -> float:
+        per_leg = sum(self.leg.masses.values()) + sum(self.leg.ankle_masses)
+        return self.base_mass + self.n_legs * per_leg
+
+
+def _get(table: dict, key: str, where: str) -> Any:
+    if key not in table:
+        raise SymbenchError(f"{where}: missing '{key}'")
+    return table[key]
+
+
+def _floats(value: Any, n: int, where: str) -> tuple[float, ...]:
+    try:
+        arr = np.asarray(value, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise SymbenchError(f"{where}: expected {n} numbers, got {value!r}") from None
+    if arr.shape != (n,) or not np.all(np.isfinite(arr)):
+        raise SymbenchError(f"{where}: expected {n} finite numbers, got {value!r}")
+    return tuple(float(x) for x in arr)
+
+
+def _positive(value: Any, where: str) -> float:
+    try:
+        x = float(value)
+    except (TypeError, ValueError):
+        raise SymbenchError(f"{where}: expected a number, got {value!r}") from None
+    if not np.isfinite(x) or x <= 0:
+        raise SymbenchError(f"{where}: expected a positive number, got {value!r}")
+    return x
+
+
+def _non_negative(value: Any, where: str) -> float:
+    """Damping and stiffness: zero is allowed, a negative value would inject energy."""
+    if value == 0:
+        return 0.0
+    try:
+        return _positive(value, where)
+    except SymbenchError:
+        raise SymbenchError(f"{where}: expected a non-negative number, got {value!r}") from None
+
+
+def _positive_floats(value: Any, n: int, where: str) -> tuple[float, ...]:
+    """Masses and principal inertias: MuJoCo needs them strictly positive."""
+    out = _floats(value, n, where)
+    if min(out) <= 0:
+        raise SymbenchError(f"{where}: expected {n} positive numbers, got {value!r}")
+    return out
+
+
+def _limits(lower: Any, upper: Any, where: str) -> tuple[tuple[float, ...], tuple[float, ...]]:
+    lo, hi = _floats(lower, 3, f"{where} lower"), _floats(upper, 3, f"{where} upper")
+    if any(a >= b for a, b in zip(lo, hi)):
+        raise SymbenchError(f"{where}: every lower limit must be below its upper limit")
+    return lo, hi
+
+
+def _positives(table: dict, keys: tuple[str, ...], where: str) -> list[float]:
+    return [_positive(_get(table, k, where), f"{where} {k}") for k in keys]
+
+
+def _parse_leg(raw: dict, src: str) -> LegSpec:
+    leg, ankle, stance = (_get(raw, k, src) for k in ("leg", "ankle", "stance"))
+    w = f"{src} [leg]"
+    lengths = {
+        k: _positive(_get(_get(leg, "lengths", w), k, w + " lengths"), f"{w} lengths.{k}")
+        for k in (*JOINT_NAMES, "foot")
+    }
+    masses = {
+        k: _positive(_get(_get(leg, "masses", w), k, w + " masses"), f"{w} masses.{k}")
+        for k in JOINT_NAMES
+    }
+    inertias = {
+        k: _positive_floats(
+            _get(_get(leg, "inertias", w), k, w + " inertias"), 3, f"{w} inertias.{k}"
+        )
+        for k in JOINT_NAMES
+    }
+    lower, upper = _limits(_get(leg, "joint_lower", w), _get(leg, "joint_upper", w), f"{w} joint")
+    a = f"{src} [ankle]"
+    ankle_lower, ankle_upper = _limits(_get(ankle, "lower", a), _get(ankle, "upper", a), a)
+    ankle_inertias = _get(ankle, "inertias", a)
+    if len(ankle_inertias) != 3:
+        raise SymbenchError(f"{a}: inertias needs 3 rows (one per gimbal link)")
+    pose = (0.0, float(_get(stance, "femur", src)), float(_get(stance, "tibia", src)))
+    if any(not lo <= p <= hi for p, lo, hi in zip(pose, lower, upper)):
+        raise SymbenchError(f"{src} [stance]: {pose} lies outside the joint limits")
+    return LegSpec(
+        lengths=lengths,
+        masses=masses,
+        inertias=inertias,
+        joint_lower=lower,
+        joint_upper=upper,
+        joint_damping=_non_negative(leg.get("joint_damping", 0.0), w + " joint_damping"),
+        ankle_masses=_positive_floats(_get(ankle, "masses", a), 3, a + " masses"),
+        ankle_inertias=tuple(_positive_floats(r, 3, a + " inertias") for r in ankle_inertias),
+        ankle_lower=ankle_lower,
+        ankle_upper=ankle_upper,
+        ankle_damping=_non_negative(_get(ankle, "damping", a), a + " damping"),
+        ankle_stiffness=_non_negative(_get(ankle, "stiffness", a), a + " stiffness"),
+        sole_radius=_positive(_get(ankle, "sole_radius", a), a + " sole_radius"),
+        stance=pose,
+    )
+
+
+def parse_spec(raw: dict, source: str = "robot.toml") -> RobotSpec:
+    """Validate a parsed robot.toml; every error names the file and the entry."""
+    name = str(_get(raw, "name", source))
+    n_legs = int(_get(raw, "n_legs", source))
+    if n_legs < 1:
+        raise SymbenchError(f"{source}: n_legs must be positive, got {n_legs}")
+    base, mounts, sym = (_get(raw, k, source) for k in ("base", "mounts", "symmetry"))
+    magnet, control, gait = (_get(raw, k, source) for k in ("magnet", "control", "gait"))
+    m = f"{source} [mounts]"
+    spec = RobotSpec(
+        name=name,
+        n_legs=n_legs,
+        description=str(raw.get("description", "")),
+        base_mass=_positive(_get(base, "mass", source), f"{source} base.mass"),
+        base_inertia=_floats(_get(base, "inertia", source), 3, f"{source} base.inertia"),
+        base_semi_axes=_floats(_get(base, "semi_axes", source), 3, f"{source} base.semi_axes"),
+        mount_radius=_positive(_get(mounts, "radius", m), m + " radius"),
+        mount_z=float(_get(mounts, "z", m)),
+        mount_angles_deg=_floats(_get(mounts, "angles_deg", m), n_legs, m + " angles_deg"),
+        coxa_yaw_deg=_floats(_get(mounts, "coxa_yaw_deg", m), n_legs, m + " coxa_yaw_deg"),
+        leg=_parse_leg(raw, source),
+        magnet=MagnetSpec(
+            *_positives(magnet, ("force", "friction", "contact_distance"), f"{source} [magnet]")
+        ),
+        control=ControlSpec(
+            *_positives(control, ("torque_limit", "kp", "kd", "timestep"), f"{source} [control]")
+        ),
+        gait=GaitSpec(
+            *_positives(
+                gait,
+                ("release", "swing", "touchdown", "swing_height", "step_length"),
+                f"{source} [gait]",
+            )
+        ),
+        symmetry_kind=str(_get(sym, "kind", f"{source} [symmetry]")),
+        symmetry_shift=int(sym.get("shift", 1)),
+        symmetry_mirror_offset=int(sym.get("mirror_offset", 0)),
+        canonical=json.dumps(raw, sort_keys=True, separators=(",", ":")),
+    )
+    group = from_spec(n_legs, spec.symmetry_kind, spec.symmetry_shift, spec.symmetry_mirror_offset)
+    unwrapped = np.unwrap(np.radians(spec.mount_angles_deg))
+    if n_legs > 1 and (
+        np.any(np.diff(unwrapped) <= 0) or unwrapped[-1] - unwrapped[0] >= 2 * np.pi
+    ):
+        raise SymbenchError(
+            f"{m}: legs must be numbered counter-clockwise, once around "
+            "(increasing angles_deg spanning less than 360 degrees)"
+        )
+    if spec.symmetry_shift * group.rotation_order != n_legs:
+        raise SymbenchError(
+            f"{source} [symmetry]: shift must be the legs per smallest rotation "
+            f"of the group ({n_legs // group.rotation_order} for {group.name}), "
+            f"got {spec.symmetry_shift}"
+        )
+    check_geometry(spec.leg_rotations(), spec.leg_origins(), group, source)
+    in_plane = (
+        spec.base_inertia[0] == spec.base_inertia[1],
+        spec.base_semi_axes[0] == spec.base_semi_axes[1],
+    )
+    if group.rotation_order > 2 and not all(in_plane):
+        raise SymbenchError(
+            f"{source}: a base with rotations of order {group.rotation_order} needs "
+            "equal x and y base.inertia and base.semi_axes, or it breaks the symmetry"
+        )
+    return spec
+
+
+def load_spec(spec_dir: Path) -> RobotSpec:
+    """The spec in `spec_dir/robot.toml`."""
+    path = Path(spec_dir) / "robot.toml"
+    if not path.is_file():
+        raise SymbenchError(f"robot spec {path} does not exist")
+    try:
+        raw = tomllib.loads(path.read_text())
+    except tomllib.TOMLDecodeError as exc:
+        raise SymbenchError(f"{path}: not valid TOML ({exc})") from None
+    return parse_spec(raw, str(path))
+
+
+def load_robot(name: str) -> RobotSpec:
+    """The registered robot `name` (through the symbench_robots hook)."""
+    from symbench.core.plugin import registry
+
+    spec = load_spec(registry.robot(name).spec_dir)
+    if spec.name != name:
+        raise SymbenchError(f"robot '{name}' points at a spec named '{spec.name}'")
+    return spec

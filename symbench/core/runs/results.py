@@ -1,0 +1,224 @@
+"""Result records: everything needed to trust and reproduce one run, validated and sealed.
+
+A record is JSON, validated by a versioned pydantic schema when written and when read, so a
+record with a missing field or a foreign schema version is refused with a message saying
+which. Since schema 2 a record is
+sealed: `seal` is the SHA-256 of its canonical JSON without the seal, so a value edited by
+hand is detected whenever the record is read. The seal is not a signature (anyone can re-seal
+an edited record); `symbench verify` re-runs a record to check its numbers.
+
+Names that end up in file names (robot, split, model, variant, dataset) must be safe
+identifiers, so no record can make publish or leaderboard write outside their folder.
+Schema-1 records (unsealed, without provenance) are read for display only
+(`read_display_record`); everything that trusts a record uses `read_record`.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+from pathlib import Path
+from typing import Annotated, Any, Literal
+
+from pydantic import BaseModel, ConfigDict, Field, StringConstraints, ValidationError
+
+from symbench.core.common.atomic import write_text_atomic
+from symbench.core.common.errors import SymbenchError
+from symbench.core.common.jsonfile import parse_json
+from symbench.core.common.validation import explain
+
+RECORD_SCHEMA_VERSION = 2
+LEGACY_SCHEMA_VERSION = 1  # unsealed, no provenance: shown by `symbench leaderboard` only
+
+# letters, digits, '.', '_' and '-', not starting with '.': no path separators, no '..'
+IDENTIFIER = r"^[A-Za-z0-9][A-Za-z0-9._-]*$"
+Identifier = Annotated[str, StringConstraints(pattern=IDENTIFIER, max_length=100)]
+Sha256 = Annotated[str, StringConstraints(pattern=r"^[0-9a-f]{64}$")]
+
+
+class _Strict(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+class PluginInfo(_Strict):
+    """Which code built the network: enough to install the same plugin and see if it changed."""
+
+    module: str = Field(description="the module holding the model's build function")
+    distribution: str = Field(description="the installed distribution providing that module")
+    version: str
+    source_sha256: Sha256 = Field(description="SHA-256 over the plugin package's *.py files")
+
+
+class ModelInfoV1(_Strict):
+    name: Identifier
+    backend: Literal["torch", "jax"]
+    view: Identifier
+    variant: Identifier
+    equivariant: bool = Field(description="whether the model claims the robot's symmetry")
+    hyperparameters: dict[str, Any]
+    learning_rate: float
+    parameters: int = Field(ge=0, description="number of trainable parameters")
+
+
+class ModelInfo(ModelInfoV1):
+    hyperparameters: dict[str, Any] = Field(
+        description="every keyword of the build function, defaults included"
+    )
+    plugin: PluginInfo
+
+
+class DatasetInfo(_Strict):
+    id: Identifier
+    content_hash: Sha256
+    robot_spec_hash: str
+    preset: Identifier
+
+
+class SampleCounts(_Strict):
+    train: int = Field(ge=0)
+    val: int = Field(ge=0)
+    test: int = Field(ge=0)
+    train_trajectories: int = Field(ge=0)
+    val_trajectories: int = Field(ge=0)
+    test_trajectories: int = Field(ge=0)
+
+
+class TrainingInfoV1(_Strict):
+    epochs: int = Field(ge=0)
+    best_epoch: int = Field(ge=0)
+    stopped_early: bool
+    best_val_loss: float
+    batch_size: int
+
+
+class TrainingConfig(_Strict):
+    """The `TrainConfig` a run used, defaults resolved (everything but the progress bar)."""
+
+    seed: int
+    batch_size: int = Field(ge=1)
+    max_epochs: int = Field(ge=1)
+    stop_ratio: float
+    stop_patience: int = Field(ge=1)
+    learning_rate: float = Field(gt=0)
+    hyper: dict[str, Any] = Field(description="overrides of the build function's defaults")
+    compile: bool
+
+
+class TrainingInfo(TrainingInfoV1):
+    config: TrainingConfig
+    checkpoint_sha256: dict[str, Sha256] = Field(
+        min_length=1, description="file name -> SHA-256 of the best checkpoint's files"
+    )
+
+
+class RecordV1(_Strict):
+    """Schema 1: still readable for display, never trusted."""
+
+    schema_version: Literal[1]
+    created: str = Field(description="UTC time, ISO 8601")
+    model: ModelInfoV1
+    robot: Identifier
+    dataset: DatasetInfo
+    split: Identifier
+    seed: int
+    samples: SampleCounts
+    training: TrainingInfoV1
+    metrics: dict[str, dict[str, Any]] = Field(description="evaluator name -> its metrics")
+    timings_s: dict[str, float]
+    hardware: dict[str, Any]
+    versions: dict[str, str]
+    git_commit: str
+
+    def key(self) -> str:
+        """What identifies a run in a sweep: one record per key (safe as a file name)."""
+        m = self.model
+        return f"{self.robot}__{self.split}__{m.name}__{m.variant}__{m.backend}__seed{self.seed}"
+
+
+class RecordBody(RecordV1):
+    """A schema-2 record before it is sealed: what the runner fills in."""
+
+    schema_version: Literal[2] = RECORD_SCHEMA_VERSION
+    model: ModelInfo
+    training: TrainingInfo
+
+
+class ResultRecord(RecordBody):
+    seal: Sha256 = Field(description="SHA-256 of the canonical JSON of every other field")
+
+
+def seal_of(data: dict[str, Any]) -> str:
+    """The SHA-256 of the record's JSON data without its seal, keys sorted."""
+    body = {k: v for k, v in data.items() if k != "seal"}
+    text = json.dumps(body, sort_keys=True, separators=(",", ":"), ensure_ascii=True)
+    return hashlib.sha256(text.encode()).hexdigest()
+
+
+def _explain(error: ValidationError, source: str) -> SymbenchError:
+    return explain(error, f"invalid result record {source}")
+
+
+def write_record(record: RecordBody | dict, path: Path) -> ResultRecord:
+    """Validate, seal (a seal already present is recomputed), write atomically; returns the
+    sealed record."""
+    data = record.model_dump(mode="json") if isinstance(record, BaseModel) else dict(record)
+    data.pop("seal", None)
+    try:
+        body = RecordBody.model_validate(data)
+    except ValidationError as exc:
+        raise _explain(exc, str(path)) from None
+    data = json.loads(body.model_dump_json())  # exactly what a reader will parse
+    data["seal"] = seal_of(data)
+    write_text_atomic(Path(path), json.dumps(data, indent=2) + "\n")
+    return ResultRecord.model_validate(data)
+
+
+def _load(path: Path) -> dict[str, Any]:
+    try:
+        text = Path(path).read_bytes()
+    except OSError as exc:
+        raise SymbenchError(f"cannot read result record {path}: {exc.strerror or exc}") from None
+    data = parse_json(text, f"cannot read result record {path}")
+    if not isinstance(data, dict):
+        raise SymbenchError(f"result record {path} is not a JSON object")
+    return data
+
+
+def _sealed(data: dict[str, Any], path: Path) -> ResultRecord:
+    if data.get("schema_version") == LEGACY_SCHEMA_VERSION:
+        raise SymbenchError(
+            f"{path}: record is not sealed (schema {LEGACY_SCHEMA_VERSION}); re-run it"
+        )
+    if data.get("schema_version") != RECORD_SCHEMA_VERSION:
+        raise SymbenchError(
+            f"result record {path} has schema version "
+            f"{data.get('schema_version')!r}; this symbench reads version "
+            f"{RECORD_SCHEMA_VERSION}"
+        )
+    if data.get("seal") != seal_of(data):
+        raise SymbenchError(f"{path}: record does not match its seal (edited after it was written)")
+    try:
+        return ResultRecord.model_validate(data)
+    except ValidationError as exc:
+        raise _explain(exc, str(path)) from None
+
+
+def read_record(path: Path) -> ResultRecord:
+    """A sealed record whose content matches its seal; anything else is a clear error."""
+    return _sealed(_load(path), path)
+
+
+def read_display_record(path: Path) -> RecordV1:
+    """A sealed record, or a schema-1 one (validated, unsealed) for tables of old boards."""
+    data = _load(path)
+    if data.get("schema_version") != LEGACY_SCHEMA_VERSION:
+        return _sealed(data, path)
+    try:
+        return RecordV1.model_validate(data)
+    except ValidationError as exc:
+        raise _explain(exc, str(path)) from None
+
+
+def json_schema() -> dict[str, Any]:
+    """The record's JSON Schema (documented in the README)."""
+    return ResultRecord.model_json_schema()

@@ -1,0 +1,101 @@
+"""`symbench run`: train and evaluate one model on one robot, print a table, write a record."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+from rich.console import Console
+from rich.table import Table
+
+from symbench.core.common.cli_types import EPOCHS, SEED, WORKERS, CommaList, WritableFolder
+from symbench.core.runs.results import ResultRecord
+from symbench.core.runs.runner import DEFAULT_EVALUATORS, RunSpec
+from symbench.core.runs.runner import run as run_spec
+
+
+@click.command("run")
+@click.option("--model", "model_name", required=True, help="Registered model, e.g. sdnn.")
+@click.option("--robot", "robot_name", required=True, help="Registered robot, e.g. hexa.")
+@click.option("--backend", default="torch", show_default=True, help="torch or jax.")
+@click.option("--split", default="iid", show_default=True, help="A registered split.")
+@click.option("--seed", default=0, show_default=True, type=SEED)
+@click.option("--preset", default="small", show_default=True, help="smoke, small or paper.")
+@click.option(
+    "--variant",
+    type=click.Choice(["acc", "next"]),
+    default=None,
+    help="Input variant (default: the model's; closed-loop control uses next).",
+)
+@click.option(
+    "--evaluators",
+    default=",".join(DEFAULT_EVALUATORS),
+    show_default=True,
+    type=CommaList(),
+    help="Comma-separated evaluator names (see `symbench list evaluators`).",
+)
+@click.option(
+    "--output",
+    type=WritableFolder(),
+    default=Path("results"),
+    show_default=True,
+    help="Folder for the record, checkpoints and plots.",
+)
+@click.option(
+    "--workers",
+    default=2,
+    show_default=True,
+    type=WORKERS,
+    help="Worker processes at once, simulating the dataset when it is missing.",
+)
+@click.option("--max-epochs", type=EPOCHS, default=None, help="Override the preset's epoch cap.")
+def run(
+    model_name: str,
+    robot_name: str,
+    backend: str,
+    split: str,
+    seed: int,
+    preset: str,
+    variant: str | None,
+    evaluators: list[str],
+    output: Path,
+    workers: int,
+    max_epochs: int | None,
+) -> None:
+    """Train and evaluate MODEL on ROBOT (generating the dataset when missing)."""
+    console = Console()
+    spec = RunSpec(
+        model=model_name,
+        robot=robot_name,
+        backend=backend,
+        split=split,
+        seed=seed,
+        preset=preset,
+        variant=variant,
+        evaluators=tuple(evaluators),
+        output=output,
+        workers=workers,
+        max_epochs=max_epochs,
+    )
+    record = run_spec(spec, on_stage=lambda stage: console.print(f"[bold]{stage}[/]"))
+    console.print(metrics_table(record))
+    console.print(f"result record: {spec.record_path}")
+
+
+def metrics_table(record: ResultRecord) -> Table:
+    """The record's scalar metrics, one row each."""
+    m = record.model
+    table = Table(
+        title=f"{m.name} ({m.backend}) on {record.robot}, split {record.split}, "
+        f"seed {record.seed}, {record.samples.train} training samples"
+    )
+    table.add_column("evaluator")
+    table.add_column("metric")
+    table.add_column("value", justify="right")
+    for evaluator, metrics in record.metrics.items():
+        for name, value in metrics.items():
+            if isinstance(value, bool):
+                table.add_row(evaluator, name, str(value))
+            elif isinstance(value, (int, float)):
+                table.add_row(evaluator, name, f"{value:.4g}")
+    return table

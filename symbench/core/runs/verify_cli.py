@@ -1,0 +1,81 @@
+"""`symbench verify`: re-run records from scratch and compare every metric."""
+
+from __future__ import annotations
+
+import json
+import tempfile
+from pathlib import Path
+
+import click
+from rich.console import Console
+from rich.table import Table
+
+from symbench.core.common.cli_types import NON_NEGATIVE, WORKERS
+from symbench.core.runs.verify import ATOL, RTOL, Tolerance, Verification, verify_record
+
+
+def _table(result: Verification) -> Table:
+    table = Table(title=f"{result.path} ({result.key}), {result.seconds:.0f} s")
+    for column in ("metric", "recorded", "reproduced", "agree"):
+        table.add_column(column, overflow="fold")
+    for c in result.checks:
+        table.add_row(
+            c.name, repr(c.recorded), repr(c.reproduced), "yes" if c.agree else "[red]NO[/]"
+        )
+    return table
+
+
+@click.command("verify")
+@click.argument("records", nargs=-1, required=True, type=click.Path(path_type=Path, exists=True))
+@click.option(
+    "--rtol",
+    default=RTOL,
+    show_default=True,
+    type=NON_NEGATIVE,
+    help="Relative tolerance (deterministic CPU training reproduces bit for bit).",
+)
+@click.option(
+    "--atol", default=ATOL, show_default=True, type=NON_NEGATIVE, help="Absolute tolerance."
+)
+@click.option(
+    "--workers",
+    default=2,
+    show_default=True,
+    type=WORKERS,
+    help="Worker processes at once, simulating a missing dataset.",
+)
+@click.option("--json", "as_json", is_flag=True, help="Print JSON instead of tables.")
+def verify(
+    records: tuple[Path, ...], rtol: float, atol: float, workers: int, as_json: bool
+) -> None:
+    """Re-run each RECORD (its dataset, seed, hyper-parameters and evaluators) and compare
+    every metric; exits with 1 when any disagrees."""
+    tolerance = Tolerance(rtol, atol)
+    import symbench.core.training.backends.torch_backend  # noqa: F401  (sets its thread count)
+    from symbench.core.training.kernels import training_kernel_problems
+
+    for problem in training_kernel_problems():  # then bit-for-bit agreement is not expected
+        click.echo(
+            f"warning: {problem}; training may not reproduce records made elsewhere", err=True
+        )
+    with tempfile.TemporaryDirectory(prefix="symbench-verify-") as workdir:
+        results = [verify_record(path, Path(workdir), tolerance, workers) for path in records]
+    if as_json:
+        click.echo(json.dumps([r.to_dict() for r in results], indent=2))
+    else:
+        console = Console()
+        console.print(f"agreement: {tolerance} (numbers and booleans; text is not compared)")
+        for result in results:
+            console.print(_table(result))
+            bad = result.disagreements()
+            console.print(
+                f"{result.path}: "
+                + (
+                    f"{len(bad)} of {len(result.checks)} values disagree: {', '.join(bad)}"
+                    if bad
+                    else f"all {len(result.checks)} values agree"
+                ),
+                soft_wrap=True,
+            )
+    if not all(r.agree for r in results):
+        raise click.exceptions.Exit(1)

@@ -1,0 +1,208 @@
+"""PyTorch backend: `entry.build(dims, **hyper)` returns a `torch.nn.Module` whose
+`forward(**inputs)` maps normalized view inputs to normalized torques (N, n_legs, 3).
+
+Uncompiled predictions run the network as a frozen TorchScript trace: for batch-1 control-loop
+calls the per-operator overhead of eager mode dominates, and the trace computes the same
+float32 operations bitwise (sdnn on hexa: 148 -> 68 us; torch.compile: 100-120 us).
+
+Torch runs one intra-op thread unless SYMBENCH_TORCH_THREADS says otherwise: the benchmark's
+matrices (batch 64, latent 128) are too small to gain from threads, and on a 2-core machine
+shared with the simulator or other runs, two threads fighting for cores made training up to
+6 times slower (measured side by side: 3,951 vs 668 samples/s for sdnn on a loaded machine).
+"""
+
+from __future__ import annotations
+
+import os
+import warnings
+from typing import Any
+
+import numpy as np
+import torch
+import torch.nn.functional as F
+
+from symbench.core.data.model_dims import ModelDims
+from symbench.core.plugin.entries import ModelEntry
+from symbench.core.training.backends.checks import build_error, check_output, check_params
+from symbench.core.training.normalization import TARGET_KEY, Normalizer
+
+torch.set_num_threads(int(os.environ.get("SYMBENCH_TORCH_THREADS", "1")))
+
+Params = dict[str, np.ndarray]
+EVAL_CHUNK = 8192
+_DTYPES = {np.dtype(np.float32): torch.float32, np.dtype(np.float64): torch.float64}
+
+
+def build_network(
+    entry: ModelEntry, dims: ModelDims, hyper: dict[str, Any], params: Params | None = None
+) -> torch.nn.Module:
+    """The entry's network, with `params` loaded when given."""
+    try:
+        net = entry.build(dims, **hyper)
+    except Exception as exc:
+        raise build_error(entry, exc) from exc
+    if not isinstance(net, torch.nn.Module):
+        raise build_error(
+            entry, TypeError(f"build returned {type(net).__name__}, expected a torch.nn.Module")
+        )
+    if params is not None:
+        load_params(entry, net, params)
+    return net
+
+
+def load_params(entry: ModelEntry, net: torch.nn.Module, params: Params) -> None:
+    expected = {k: tuple(v.shape) for k, v in net.state_dict().items()}
+    check_params(entry, expected, params)
+    net.load_state_dict(
+        {k: torch.from_numpy(np.array(v, dtype=np.float32)) for k, v in params.items()}
+    )
+
+
+def to_numpy(module: torch.nn.Module) -> Params:
+    return {k: v.detach().cpu().numpy().copy() for k, v in module.state_dict().items()}
+
+
+class Normalized(torch.nn.Module):
+    """The network between input normalization and target de-normalization."""
+
+    def __init__(self, net: torch.nn.Module, normalizer: Normalizer, keys: tuple[str, ...]):
+        super().__init__()
+        self.net, self.keys = net, keys
+        for key in (*keys, TARGET_KEY):
+            mean, std = normalizer.stats[key]
+            self.register_buffer(f"{key}_mean", torch.from_numpy(np.asarray(mean, np.float64)))
+            self.register_buffer(f"{key}_std", torch.from_numpy(np.asarray(std, np.float64)))
+
+    def forward(self, *xs: torch.Tensor) -> torch.Tensor:
+        inputs = {
+            k: (x - getattr(self, f"{k}_mean")) / getattr(self, f"{k}_std")
+            for k, x in zip(self.keys, xs)
+        }
+        return self.net(**inputs) * self.target_std + self.target_mean
+
+
+def traced(module: torch.nn.Module, dims: ModelDims, dtype: torch.dtype) -> torch.nn.Module:
+    """`module` as a frozen TorchScript trace, checked against eager mode at two batch sizes;
+    `module` itself when it cannot be traced faithfully (data-dependent control flow)."""
+    gen = torch.Generator().manual_seed(0)
+
+    def example(n: int) -> tuple[torch.Tensor, ...]:
+        return tuple(
+            torch.randn((n, *shape), generator=gen, dtype=dtype) for _, shape in dims.inputs
+        )
+
+    try:
+        with warnings.catch_warnings(), torch.no_grad():
+            # torch.jit is deprecated in favour of torch.compile, which is slower here (see top)
+            warnings.simplefilter("ignore")
+            trace = torch.jit.trace(module, example(1), check_inputs=[example(3), example(1)])
+            return torch.jit.freeze(trace)
+    except Exception:
+        return module
+
+
+class TorchTrainer:
+    def __init__(
+        self,
+        entry: ModelEntry,
+        dims: ModelDims,
+        net: torch.nn.Module,
+        learning_rate: float,
+        compiled: bool,
+    ):
+        self.entry, self.dims, self.net = entry, dims, net
+        # fused: one kernel per step instead of a loop over parameters (sdnn: +5-10% samples/s)
+        self.opt = torch.optim.Adam(net.parameters(), lr=learning_rate, fused=True)
+        self.forward = torch.compile(net) if compiled else net
+
+    def set_data(self, train_inputs, train_target, val_inputs, val_target) -> None:
+        def tensors(d):
+            return {k: torch.from_numpy(np.asarray(v, np.float32)) for k, v in d.items()}
+
+        self.train_inputs, self.val_inputs = tensors(train_inputs), tensors(val_inputs)
+        self.train_target = torch.from_numpy(np.asarray(train_target, np.float32))
+        self.val_target = torch.from_numpy(np.asarray(val_target, np.float32))
+
+    def train_epoch(self, order: np.ndarray) -> float:
+        self.net.train()
+        total = torch.zeros(())
+        for idx in torch.from_numpy(order):
+            batch = {k: v[idx] for k, v in self.train_inputs.items()}
+            out = self.forward(**batch)
+            # before the loss, which would broadcast (N, legs, 1) against (N, legs, 3) silently
+            check_output(self.entry, self.dims, out.shape, len(idx))
+            loss = F.mse_loss(out, self.train_target[idx])
+            self.opt.zero_grad(set_to_none=True)
+            loss.backward()
+            self.opt.step()
+            total += loss.detach()
+        return float(total) / len(order)
+
+    @torch.no_grad()
+    def val_loss(self) -> float:
+        self.net.eval()
+        n = len(self.val_target)
+        sse = 0.0
+        for start in range(0, n, EVAL_CHUNK):
+            batch = {k: v[start : start + EVAL_CHUNK] for k, v in self.val_inputs.items()}
+            err = self.forward(**batch) - self.val_target[start : start + EVAL_CHUNK]
+            sse += float((err.double() ** 2).sum())
+        return sse / self.val_target.numel()
+
+    def params(self) -> Params:
+        return to_numpy(self.net)
+
+    def load_params(self, params: Params) -> None:
+        load_params(self.entry, self.net, params)
+
+    def optimizer_state(self) -> Params:
+        return {
+            f"{i}/{k}": v.detach().numpy().copy()
+            for i, st in self.opt.state_dict()["state"].items()
+            for k, v in st.items()
+        }
+
+    def load_optimizer_state(self, state: Params) -> None:
+        per_param: dict[int, dict[str, torch.Tensor]] = {}
+        for key, value in state.items():
+            i, name = key.split("/")
+            per_param.setdefault(int(i), {})[name] = torch.from_numpy(value.copy())
+        sd = self.opt.state_dict()
+        sd["state"] = per_param
+        self.opt.load_state_dict(sd)
+
+
+class TorchBackend:
+    name = "torch"
+    default_compiled = False  # torch.compile costs tens of seconds on CPU; see `bench models`
+
+    def init_params(self, entry, dims, hyper, seed) -> Params:
+        with torch.random.fork_rng(devices=[]):
+            torch.manual_seed(seed)
+            return to_numpy(build_network(entry, dims, hyper))
+
+    def make_predictor(
+        self, entry, dims, hyper, params, normalizer, dtype=np.float32, compiled=False
+    ):
+        np_dtype = np.dtype(dtype)
+        module = Normalized(build_network(entry, dims, hyper, params), normalizer, dims.keys)
+        module = module.to(_DTYPES[np_dtype]).eval()
+        run = torch.compile(module) if compiled else traced(module, dims, _DTYPES[np_dtype])
+        keys = dims.keys
+
+        def predict(inputs: dict[str, np.ndarray]) -> np.ndarray:
+            with torch.inference_mode():
+                xs = [torch.from_numpy(np.asarray(inputs[k], np_dtype)) for k in keys]
+                y = run(*xs)
+            check_output(entry, dims, y.shape, len(xs[0]))
+            return y.numpy().astype(np.float64)
+
+        return predict
+
+    def make_trainer(self, entry, dims, hyper, params, learning_rate, compiled=False):
+        return TorchTrainer(
+            entry, dims, build_network(entry, dims, hyper, params), learning_rate, compiled
+        )
+
+
+BACKEND = TorchBackend()

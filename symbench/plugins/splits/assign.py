@@ -1,0 +1,75 @@
+"""The standard splits' assignments: each labels every trajectory of a dataset.
+
+They use only the public API (`symbench.SplitContext`, `symbench.carve_validation`), as a
+third-party split would.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+
+import numpy as np
+
+from symbench import SplitContext, SymbenchError, carve_validation
+
+TEST_FRACTION = 0.2
+
+
+def iid(context: SplitContext) -> np.ndarray:
+    """Held-out trajectories from the same scenario distribution."""
+    n = len(context.trajectory_ids)
+    if n < 3:
+        raise SymbenchError(
+            f"dataset {context.dataset_id}: iid needs at least 3 trajectories, has {n}"
+        )
+    n_test = min(n - 2, max(1, round(TEST_FRACTION * n)))
+    labels = np.full(n, "train", dtype=object)
+    labels[context.rng("iid-test").permutation(n)[:n_test]] = "test"
+    return carve_validation(labels, context)
+
+
+def unseen_heading(context: SplitContext) -> np.ndarray:
+    """Train on the lower half of the slope headings (sorted, mod 360), test on the rest."""
+    headings = np.round(np.mod(context.values("heading_deg").astype(float), 360.0), 6)
+    unique = np.unique(headings)
+    if len(unique) < 2:
+        raise SymbenchError(
+            f"dataset {context.dataset_id}: unseen-heading needs at least 2 "
+            f"slope headings, found {unique.tolist()}"
+        )
+    seen = unique[: math.ceil(len(unique) / 2)]
+    labels = np.where(np.isin(headings, seen), "train", "test").astype(object)
+    return carve_validation(labels, context)
+
+
+def unseen_rotation(context: SplitContext) -> np.ndarray:
+    """Train on initial yaws in the fundamental sector [0, 360 / order), test on the others."""
+    width = 360.0 / context.rotation_order
+    yaws = np.mod(context.values("yaw_deg").astype(float), 360.0)
+    inside = yaws < width - 1e-9
+    if inside.all() or not inside.any():
+        raise SymbenchError(
+            f"dataset {context.dataset_id}: unseen-rotation needs initial yaws "
+            f"both inside and outside [0, {width:g}) degrees"
+        )
+    return carve_validation(np.where(inside, "train", "test").astype(object), context)
+
+
+def fraction(share: float) -> Callable[[SplitContext], np.ndarray]:
+    """The iid split with only a seeded `share` of its training trajectories kept.
+
+    The kept sets are nested (0.1 within 0.25 within 0.5 ...), validation and test are the
+    iid ones, so sample-efficiency curves differ only in the training data.
+    """
+    if not 0.0 < share <= 1.0:
+        raise SymbenchError(f"a training fraction must be in (0, 1], got {share}")
+
+    def assign(context: SplitContext) -> np.ndarray:
+        labels = iid(context)
+        train = context.rng("fraction-order").permutation(np.flatnonzero(labels == "train"))
+        labels[train[max(1, math.ceil(share * len(train))) :]] = "unused"
+        return labels
+
+    assign.__doc__ = f"iid with {share:g} of the training trajectories"
+    return assign
