@@ -5,7 +5,7 @@ VENV := .venv
 STAMP := $(VENV)/.installed
 export MUJOCO_GL ?= disable
 
-.PHONY: run test test-slow bench clean
+.PHONY: run test test-slow check bench clean
 
 $(STAMP): pyproject.toml constraints.txt examples/symbench-example-plugin/pyproject.toml
 	test -x $(VENV)/bin/python || $(PYTHON) -m venv $(VENV)
@@ -15,7 +15,14 @@ $(STAMP): pyproject.toml constraints.txt examples/symbench-example-plugin/pyproj
 run: $(STAMP)
 	$(VENV)/bin/symbench run --model sdnn --robot hexa
 
-test: $(STAMP)
+# The checks first (seconds): style, format, types, and the layers of the data flow.
+check: $(STAMP)
+	$(VENV)/bin/ruff check .
+	$(VENV)/bin/ruff format --check .
+	$(VENV)/bin/mypy
+	$(VENV)/bin/lint-imports
+
+test: check
 	$(VENV)/bin/python -m pytest -q -n 2
 
 test-slow: $(STAMP)

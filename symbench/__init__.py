@@ -15,9 +15,12 @@ Writing evaluators
     rotate_scene_about_gravity, Scenario, simulate, track, build_view, sample_efficiency_png
 Writing splits
     SplitContext, carve_validation
+Reading a preset's sizes, budgets and horizons (`symbench presets`)
+    Preset, PRESETS, preset
 Using symbench from Python (a plugin's own tests)
     model_entry, load_robot, TrainConfig, train
-The equivariance kit is `symbench.testing` (also a pytest plugin).
+The equivariance kit is `symbench.testing` (also a pytest plugin); `__version__` is the
+installed version.
 """
 
 from __future__ import annotations
@@ -62,6 +65,9 @@ _PUBLIC: dict[str, str] = {
     "sample_efficiency_png": "symbench.core.board.plots:sample_efficiency_png",
     "SplitContext": "symbench.core.data.splits:SplitContext",
     "carve_validation": "symbench.core.data.splits:carve_validation",
+    "Preset": "symbench.core.data.presets:Preset",
+    "PRESETS": "symbench.core.data.presets:PRESETS",
+    "preset": "symbench.core.data.presets:preset",
     "model_entry": "symbench.core.plugin.registry:model",
     "load_robot": "symbench.core.robot.specs:load_robot",
     "TrainConfig": "symbench.core.training.loop:TrainConfig",
@@ -70,6 +76,7 @@ _PUBLIC: dict[str, str] = {
 
 __all__ = [
     "BACKENDS",
+    "PRESETS",
     "VARIANTS",
     "VIEWS",
     "EvaluationContext",
@@ -79,6 +86,7 @@ __all__ = [
     "LegGroup",
     "ModelDims",
     "ModelEntry",
+    "Preset",
     "RobotEntry",
     "Scenario",
     "SplitContext",
@@ -95,6 +103,7 @@ __all__ = [
     "hookimpl",
     "load_robot",
     "model_entry",
+    "preset",
     "relative_error",
     "rmse",
     "rotate_scene_about_gravity",
@@ -130,6 +139,7 @@ if TYPE_CHECKING:  # what type checkers and editors see
     from symbench.core.common.lazy import Lazy
     from symbench.core.data import schema
     from symbench.core.data.model_dims import ModelDims
+    from symbench.core.data.presets import PRESETS, Preset, preset
     from symbench.core.data.raw_action import act_on_raw, rotate_scene_about_gravity
     from symbench.core.data.splits import SplitContext, carve_validation
     from symbench.core.data.views import build_view

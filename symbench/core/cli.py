@@ -38,6 +38,7 @@ LAZY_COMMANDS: dict[str, str] = {
     "sweep": "symbench.core.runs.sweep_cli:sweep",
     "verify": "symbench.core.runs.verify_cli:verify",
     "data": "symbench.core.data.cli:data",
+    "presets": "symbench.core.data.presets_cli:presets",
     "check-equivariance": "symbench.testing.check_command:check_equivariance",
 }
 
@@ -70,7 +71,7 @@ class SymbenchGroup(LazyGroup):
             if isinstance(exc, SymbenchError):
                 raise click.ClickException(str(exc)) from exc
             raise click.ClickException(
-                f"internal error: {one_line(f'{type(exc).__name__}: {exc}')}"
+                f"internal error: {type(exc).__name__}: {one_line(exc)}"
                 " (run with --debug for the traceback)"
             ) from exc
         finally:
@@ -155,9 +156,10 @@ def plugins_command(ctx: click.Context) -> None:
     and version (JSON)."""
     host = get_host()
     registered = names(host)  # calls every hook first, so plugins that raise are listed too
+    root = ctx.find_root().command
+    assert isinstance(root, SymbenchGroup)
     registered += [
-        host.registered("command", name, plugin)
-        for name, plugin in ctx.find_root().command.plugin_commands.items()
+        host.registered("command", name, plugin) for name, plugin in root.plugin_commands.items()
     ]
     click.echo(json.dumps({**host.describe(), "names": registered}, indent=2))
 

@@ -10,7 +10,7 @@ so the whole prediction path, normalization included, is tested.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -118,7 +118,7 @@ class EquivarianceReport:
 
 
 def element_errors(
-    predictors: dict[str, Predict],
+    predictors: Mapping[str, Predict],
     group: LegGroup,
     n_features: int,
     input_signs: np.ndarray | None = None,

@@ -99,9 +99,27 @@ def test_fractions_are_nested_and_share_the_iid_test_set(hexa_small):
 
 
 def test_smoke_supports_every_standard_split(smoke_hexa):
+    """The smoke preset's 4 trajectories (headings 0 and 180 x yaws 0 and 180) give every
+    standard split non-empty, disjoint parts that hold out what the split promises."""
     ds = load_dataset(smoke_hexa.dataset_id)
-    for name in STANDARD:
-        ds.split_indices(name, 0)
+    assert ds.trajectory_ids.tolist() == [0, 1, 2, 3]
+    parts = {name: ds.split_indices(name, 0) for name in STANDARD}
+    for name, part in parts.items():
+        train, val, test = (set(ids.tolist()) for ids in (part.train, part.val, part.test))
+        assert min(len(train), len(val), len(test)) == 1, name
+        assert len(train | val | test) == len(train) + len(val) + len(test), name
+        assert train | val | test <= {0, 1, 2, 3}, name
+    iid = parts["iid"]
+    assert (len(iid.train), len(iid.val), len(iid.test)) == (2, 1, 1)
+    for split, field in (("unseen-heading", "heading_deg"), ("unseen-rotation", "yaw_deg")):
+        seen = np.concatenate([parts[split].train, parts[split].val])
+        assert _scenario(ds, seen, field) == {0.0}, split
+        assert _scenario(ds, parts[split].test, field) == {180.0}, split
+    for share in (0.1, 0.25, 0.5, 0.75):
+        part = parts[f"fraction-{share:g}"]
+        assert (part.val.tolist(), part.test.tolist()) == (iid.val.tolist(), iid.test.tolist())
+        assert set(part.train.tolist()) <= set(iid.train.tolist())
+        assert len(part.train) == int(np.ceil(share * len(iid.train)))
 
 
 def test_a_split_plugin_is_used_and_its_mistakes_are_named(hexa_small):

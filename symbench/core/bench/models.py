@@ -63,7 +63,8 @@ def latency_us(entry, views, compiled: bool, seconds: float) -> float:
     one = {k: v[:1].astype(np.float32) for k, v in data.inputs.items()}
     for _ in range(20):
         predict(one)
-    times, start = [], time.perf_counter()
+    times: list[float] = []
+    start = time.perf_counter()
     while time.perf_counter() - start < seconds or len(times) < 50:
         t = time.perf_counter()
         predict(one)

@@ -24,7 +24,6 @@ from symbench.core.common.errors import SymbenchError
 from symbench.core.runs.results import RecordV1, read_display_record
 
 MIN_SEEDS = 3
-RANK_METRIC = ("torque-error", "rmse")
 # (evaluator, metric) pairs shown in the tables when present, with their column names
 COLUMNS = {
     ("torque-error", "rmse"): "rmse_Nm",

@@ -37,7 +37,7 @@ def _print_failures(failures: list[dict], shown: int = 10) -> None:
     default="small",
     show_default=True,
     type=click.Choice(list(PRESETS)),
-    help="Scenario grid size.",
+    help="Whose scenario grid (see `symbench presets`).",
 )
 @click.option(
     "--workers",

@@ -194,7 +194,7 @@ def export_dataset(dataset: Dataset, folder: Path, fmt: str = "parquet") -> Path
             write_trajectory(folder / name, arrays, dataset.n_legs)
         else:
             buf = io.BytesIO()
-            np.savez(buf, **arrays)
+            np.savez(buf, **arrays)  # type: ignore[arg-type]  # numpy's stub misreads **kwargs
             write_bytes_atomic(folder / name, buf.getvalue())
         scenario = {
             k: v for k, v in rec["scenario"].items() if k in SCENARIO_KEYS and v is not None

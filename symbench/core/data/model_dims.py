@@ -44,6 +44,7 @@ class ModelDims:
 
 def dims_for(view: str, variant: str, n_legs: int) -> ModelDims:
     """The shapes the schema declares for `view` of an `n_legs` robot."""
+    inputs: tuple[tuple[str, tuple[int, ...]], ...]
     if view == "leg_grouped":
         inputs = (("x", (n_legs, schema.leg_grouped_input(variant).size)),)
     elif view == "vector":

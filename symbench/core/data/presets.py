@@ -1,10 +1,17 @@
-"""Scenario grids of the dataset presets, and the dataset ids they produce.
+"""The presets: every size, budget and horizon of a benchmark run, one frozen object each.
+
+A preset names the dataset (its scenario grid), the training budget (epoch cap), the
+evaluators' budgets (test samples, closed-loop horizon and scenarios) and the shares of the
+sample-efficiency curve; `symbench presets` shows them all. Every consumer reads its numbers
+from here (`preset(name)`), never from a copy.
 
 A grid is the product of inclinations, slope headings, initial base yaws (evenly covering
 the full circle, a whole number per fundamental sector of the robot's rotation group, so
 that `unseen-rotation` has training data), step directions, leg orders and seeds; its order
-is fixed, so trajectory k of a preset is always the same scenario. Bump DATASET_VERSION
-whenever a grid or the recorded content changes.
+is fixed, so trajectory k of a preset is always the same scenario. The grid, with the
+preset's name and description, is stored in the dataset metadata (and so in its content
+hash): bump DATASET_VERSION whenever a grid or the recorded content changes. The budgets
+are not part of the dataset.
 """
 
 from __future__ import annotations
@@ -25,16 +32,16 @@ LEG_ORDERS = ("default", "reversed")
 
 
 @dataclass(frozen=True)
-class Preset:
-    name: str
-    description: str
+class ScenarioGrid:
+    """The dataset: one trajectory per combination of these axes, in this order."""
+
     inclinations_deg: tuple[float, ...]
     headings_deg: tuple[float, ...]
     yaws_per_turn: int  # at least this many, a whole number per sector; 0: just 0 and 180
     directions: tuple[str, ...]
     leg_orders: tuple[str, ...]
     seeds: tuple[int, ...]
-    seconds: float
+    seconds: float  # length of each trajectory
 
     def yaws_deg(self, rotation_order: int) -> tuple[float, ...]:
         """Evenly spaced from 0; (0, 180) lies on both sides of every robot's sector."""
@@ -68,12 +75,65 @@ class Preset:
             for inc, head, yaw, direction, order, seed in itertools.product(*axes)
         ]
 
-    def grid(self, rotation_order: int) -> dict[str, Any]:
-        """JSON-ready description of the grid, stored in the dataset metadata."""
-        d = asdict(self)
-        d["yaws_deg"] = list(self.yaws_deg(rotation_order))
-        return d
 
+@dataclass(frozen=True)
+class Training:
+    """The training budget of a run."""
+
+    max_epochs: int  # the cap (the stopping rule usually ends earlier; `--max-epochs` overrides)
+
+
+@dataclass(frozen=True)
+class Evaluation:
+    """What the transform-based evaluators (equivariance, invariance) spend."""
+
+    max_samples: int  # test rows (whole test trajectories, in order, cut at this many)
+    invariance_trials: int  # random rotations about gravity + translations tried
+
+
+@dataclass(frozen=True)
+class ClosedLoop:
+    """The closed-loop evaluator: the learned model tracking held-out expert climbs."""
+
+    seconds: float  # horizon of each reference climb and of its tracking
+    scenarios: int  # held-out test scenarios tracked per run (the first ones by id)
+
+
+@dataclass(frozen=True)
+class SampleEfficiency:
+    """The sample-efficiency curve, whose last point (all of them) is the iid split."""
+
+    fractions: tuple[float, ...]  # shares of the iid training trajectories: the fraction-F splits
+
+
+@dataclass(frozen=True)
+class Preset:
+    name: str
+    description: str
+    dataset: ScenarioGrid
+    training: Training
+    evaluation: Evaluation
+    closed_loop: ClosedLoop
+    sample_efficiency: SampleEfficiency
+
+    def scenarios(self, robot: str, n_legs: int, rotation_order: int) -> list[Scenario]:
+        """The dataset's scenarios in their fixed order (see `ScenarioGrid.scenarios`)."""
+        return self.dataset.scenarios(robot, n_legs, rotation_order)
+
+    def grid(self, rotation_order: int) -> dict[str, Any]:
+        """JSON-ready description of the grid, stored in the dataset metadata: part of the
+        content hash, so its fields and their order stay as they are."""
+        return {
+            "name": self.name,
+            "description": self.description,
+            **asdict(self.dataset),
+            "yaws_deg": list(self.dataset.yaws_deg(rotation_order)),
+        }
+
+
+# the budgets every preset shares (they shape the published records: change none)
+_EVALUATION = Evaluation(max_samples=4096, invariance_trials=4)
+_FRACTIONS = SampleEfficiency(fractions=(0.1, 0.25, 0.5, 0.75))
 
 PRESETS: dict[str, Preset] = {
     p.name: p
@@ -81,37 +141,55 @@ PRESETS: dict[str, Preset] = {
         Preset(
             "smoke",
             "a few one-second trajectories, for tests (seconds)",
-            inclinations_deg=(90.0,),
-            headings_deg=(0.0, 180.0),
-            yaws_per_turn=0,
-            directions=("forward",),
-            leg_orders=("default",),
-            seeds=(0,),
-            seconds=1.0,
+            ScenarioGrid(
+                inclinations_deg=(90.0,),
+                headings_deg=(0.0, 180.0),
+                yaws_per_turn=0,
+                directions=("forward",),
+                leg_orders=("default",),
+                seeds=(0,),
+                seconds=1.0,
+            ),
+            Training(max_epochs=3),
+            _EVALUATION,
+            ClosedLoop(seconds=0.3, scenarios=2),
+            _FRACTIONS,
         ),
         # Two headings suffice for the invariance split (on a wall they are exact images);
         # 12 yaws give every robot at least two distinct yaws per symmetry sector.
         Preset(
             "small",
             "the default of `symbench run`: minutes on a laptop",
-            inclinations_deg=(90.0,),
-            headings_deg=(0.0, 180.0),
-            yaws_per_turn=12,
-            directions=("forward", "left"),
-            leg_orders=("default",),
-            seeds=(0,),
-            seconds=2.6,
+            ScenarioGrid(
+                inclinations_deg=(90.0,),
+                headings_deg=(0.0, 180.0),
+                yaws_per_turn=12,
+                directions=("forward", "left"),
+                leg_orders=("default",),
+                seeds=(0,),
+                seconds=2.6,
+            ),
+            Training(max_epochs=60),
+            _EVALUATION,
+            ClosedLoop(seconds=10.0, scenarios=2),
+            _FRACTIONS,
         ),
         Preset(
             "paper",
             "the full replication: slopes, headings, yaws, gaits and seeds",
-            inclinations_deg=(57.29577951308232, 90.0),
-            headings_deg=(0.0, 90.0, 180.0, 270.0),
-            yaws_per_turn=6,
-            directions=("forward", "backward", "left", "right"),
-            leg_orders=LEG_ORDERS,
-            seeds=(0,),
-            seconds=10.0,
+            ScenarioGrid(
+                inclinations_deg=(57.29577951308232, 90.0),
+                headings_deg=(0.0, 90.0, 180.0, 270.0),
+                yaws_per_turn=6,
+                directions=("forward", "backward", "left", "right"),
+                leg_orders=LEG_ORDERS,
+                seeds=(0,),
+                seconds=10.0,
+            ),
+            Training(max_epochs=500),
+            _EVALUATION,
+            ClosedLoop(seconds=10.0, scenarios=2),
+            _FRACTIONS,
         ),
     )
 }

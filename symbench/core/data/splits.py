@@ -98,8 +98,10 @@ def resolve(split: str, context: SplitContext) -> SplitIndices:
     return indices_from_labels(split, context, labels)
 
 
-def indices_from_labels(split: str, context: SplitContext, labels: Sequence[str]) -> SplitIndices:
-    labels = np.asarray(labels, dtype=object)
+def indices_from_labels(
+    split: str, context: SplitContext, given: Sequence[str] | np.ndarray
+) -> SplitIndices:
+    labels = np.asarray(given, dtype=object)
     n = len(context.trajectory_ids)
     if labels.shape != (n,):
         raise SymbenchError(f"split '{split}' returned {labels.shape} labels for {n} trajectories")

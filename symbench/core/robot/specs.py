@@ -26,20 +26,23 @@ from symbench.core.symmetry.legs import check_geometry
 JOINT_NAMES = ("coxa", "femur", "tibia")
 
 
+Vec3 = tuple[float, ...]  # three numbers: the parser checks the count
+
+
 @dataclass(frozen=True)
 class LegSpec:
     """One leg (all legs are identical): links, masses, inertias and joint ranges."""
 
     lengths: dict[str, float]  # coxa, femur, tibia, foot (m)
     masses: dict[str, float]  # coxa, femur, tibia (kg)
-    inertias: dict[str, tuple[float, float, float]]  # principal, x along the link
-    joint_lower: tuple[float, float, float]
-    joint_upper: tuple[float, float, float]
+    inertias: dict[str, Vec3]  # principal, x along the link
+    joint_lower: Vec3
+    joint_upper: Vec3
     joint_damping: float
-    ankle_masses: tuple[float, float, float]
-    ankle_inertias: tuple[tuple[float, float, float], ...]
-    ankle_lower: tuple[float, float, float]
-    ankle_upper: tuple[float, float, float]
+    ankle_masses: Vec3
+    ankle_inertias: tuple[Vec3, ...]
+    ankle_lower: Vec3
+    ankle_upper: Vec3
     ankle_damping: float
     ankle_stiffness: float
     sole_radius: float
@@ -80,8 +83,8 @@ class RobotSpec:
     n_legs: int
     description: str
     base_mass: float
-    base_inertia: tuple[float, float, float]
-    base_semi_axes: tuple[float, float, float]
+    base_inertia: Vec3
+    base_semi_axes: Vec3
     mount_radius: float
     mount_z: float
     mount_angles_deg: tuple[float, ...]

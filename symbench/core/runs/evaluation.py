@@ -17,6 +17,7 @@ import numpy as np
 
 from symbench.core.common.arrays import ViewArrays
 from symbench.core.common.errors import SymbenchError
+from symbench.core.data.presets import Preset
 from symbench.core.plugin.entries import ModelEntry
 from symbench.core.plugin.registry import evaluator
 
@@ -39,10 +40,12 @@ class EvaluationContext:
 
     `retrain(split, variant)` trains the same architecture on another split or input variant
     (the closed-loop evaluator needs the `next` variant); results are cached per pair.
+    `preset` holds the run's budgets and horizons (test samples, closed-loop horizon, ...).
     """
 
     entry: ModelEntry
     dataset: Any  # symbench.core.data.dataset.Dataset
+    preset: Preset
     split: str
     seed: int
     predict: Predict
@@ -50,7 +53,6 @@ class EvaluationContext:
     test_trajectories: np.ndarray
     output_dir: Path
     retrain: Callable[[str, str], TrainedOnSplit]
-    max_samples: int = 4096  # cap on samples for the transform-based evaluators
     _trained: dict[tuple[str, str], TrainedOnSplit] = field(default_factory=dict, repr=False)
 
     @property
@@ -70,9 +72,11 @@ class EvaluationContext:
         return self._trained[split, variant]
 
     def test_raw(self) -> tuple[dict[str, np.ndarray], np.ndarray]:
-        """Raw columns of the test trajectories (whole trajectories, up to `max_samples` rows)."""
+        """Raw columns of the test trajectories (whole trajectories, up to the preset's
+        `evaluation.max_samples` rows)."""
         raw, ids = self.dataset.raw()
-        keep = np.flatnonzero(np.isin(ids, self.test_trajectories))[: self.max_samples]
+        cap = self.preset.evaluation.max_samples
+        keep = np.flatnonzero(np.isin(ids, self.test_trajectories))[:cap]
         return {k: v[keep] for k, v in raw.items()}, ids[keep]
 
     def predict_raw(self, raw: dict[str, np.ndarray], ids: np.ndarray) -> np.ndarray:

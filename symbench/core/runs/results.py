@@ -18,7 +18,7 @@ from __future__ import annotations
 import hashlib
 import json
 from pathlib import Path
-from typing import Annotated, Any, Literal
+from typing import Annotated, Any, Final, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, StringConstraints, ValidationError
 
@@ -27,7 +27,7 @@ from symbench.core.common.errors import SymbenchError
 from symbench.core.common.jsonfile import parse_json
 from symbench.core.common.validation import explain
 
-RECORD_SCHEMA_VERSION = 2
+RECORD_SCHEMA_VERSION: Final = 2
 LEGACY_SCHEMA_VERSION = 1  # unsealed, no provenance: shown by `symbench leaderboard` only
 
 # letters, digits, '.', '_' and '-', not starting with '.': no path separators, no '..'
@@ -138,7 +138,7 @@ class RecordV1(_Strict):
 class RecordBody(RecordV1):
     """A schema-2 record before it is sealed: what the runner fills in."""
 
-    schema_version: Literal[2] = RECORD_SCHEMA_VERSION
+    schema_version: Literal[2] = RECORD_SCHEMA_VERSION  # type: ignore[assignment]  # narrows v1
     model: ModelInfo
     training: TrainingInfo
 
@@ -217,8 +217,3 @@ def read_display_record(path: Path) -> RecordV1:
         return RecordV1.model_validate(data)
     except ValidationError as exc:
         raise _explain(exc, str(path)) from None
-
-
-def json_schema() -> dict[str, Any]:
-    """The record's JSON Schema (documented in the README)."""
-    return ResultRecord.model_json_schema()

@@ -9,6 +9,7 @@ from rich.console import Console
 from rich.table import Table
 
 from symbench.core.common.cli_types import EPOCHS, SEED, WORKERS, CommaList, WritableFolder
+from symbench.core.data.presets import PRESETS
 from symbench.core.runs.results import ResultRecord
 from symbench.core.runs.runner import DEFAULT_EVALUATORS, RunSpec
 from symbench.core.runs.runner import run as run_spec
@@ -20,7 +21,12 @@ from symbench.core.runs.runner import run as run_spec
 @click.option("--backend", default="torch", show_default=True, help="torch or jax.")
 @click.option("--split", default="iid", show_default=True, help="A registered split.")
 @click.option("--seed", default=0, show_default=True, type=SEED)
-@click.option("--preset", default="small", show_default=True, help="smoke, small or paper.")
+@click.option(
+    "--preset",
+    default="small",
+    show_default=True,
+    help=f"{', '.join(PRESETS)}: sizes, budgets, horizons (see `symbench presets`).",
+)
 @click.option(
     "--variant",
     type=click.Choice(["acc", "next"]),

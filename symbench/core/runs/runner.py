@@ -23,6 +23,7 @@ from symbench.core.data.provenance import (
     library_versions,
     plugin_info,
 )
+from symbench.core.data.presets import preset
 from symbench.core.data.schema import VARIANTS
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import ModelEntry
@@ -32,8 +33,6 @@ from symbench.core.runs.results import RecordBody, ResultRecord, write_record
 if TYPE_CHECKING:
     from symbench.core.training.loop import TrainConfig
 
-# Epoch caps of the training protocol per preset (the stopping rule usually ends earlier).
-MAX_EPOCHS = {"smoke": 3, "small": 60, "paper": 500}
 DEFAULT_EVALUATORS = ("torque-error", "equivariance", "invariance", "generalization", "closed-loop")
 
 
@@ -97,8 +96,7 @@ def check_names(spec: RunSpec) -> None:
     registry.split(spec.split)
     for name in spec.evaluators:
         registry.evaluator(name)
-    if spec.preset not in MAX_EPOCHS:
-        raise UnknownNameError("preset", spec.preset, MAX_EPOCHS)
+    preset(spec.preset)
     if spec.workers < 1:
         raise SymbenchError(f"workers must be at least 1, got {spec.workers}")
     train_config(spec)
@@ -108,7 +106,8 @@ def train_config(spec: RunSpec) -> TrainConfig:
     """The run's training configuration (checked: seed, epoch cap, ...)."""
     from symbench.core.training.loop import TrainConfig
 
-    max_epochs = MAX_EPOCHS[spec.preset] if spec.max_epochs is None else spec.max_epochs
+    cap = preset(spec.preset).training.max_epochs
+    max_epochs = cap if spec.max_epochs is None else spec.max_epochs
     return TrainConfig(
         **{
             **spec.train_config,
@@ -178,6 +177,7 @@ def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> 
     context = EvaluationContext(
         entry=entry,
         dataset=dataset,
+        preset=preset(spec.preset),
         split=spec.split,
         seed=spec.seed,
         predict=model.predict,

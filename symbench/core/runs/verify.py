@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import random
 import time
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -84,6 +84,7 @@ class Verification:
 
 def leaves(metrics: Any, prefix: str = "") -> dict[str, Any]:
     """Numeric, boolean and null values by dotted name; text is left out."""
+    items: Iterable[tuple[Any, Any]]
     if isinstance(metrics, dict):
         items = metrics.items()
     elif isinstance(metrics, list):

@@ -142,7 +142,7 @@ def _add_leg(spec_mj, base, spec: RobotSpec, i: int) -> None:
     leg = spec.leg
     lo, hi = leg.joint_lower, leg.joint_upper
     origin, rot = spec.leg_origins()[i], spec.leg_rotations()[i]
-    parent, pos, quat = base, origin, mat_to_quat(rot)
+    parent, pos, quat = base, origin, tuple(mat_to_quat(rot))
     for k, joint in enumerate(JOINT_NAMES):
         length = leg.lengths[joint]
         body = parent.add_body(name=f"leg{i}_{joint}", pos=list(pos), quat=list(quat))

@@ -9,6 +9,8 @@ on the order of the variables beyond rounding: that keeps the controller label-e
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from symbench.core.common.errors import SymbenchError
@@ -24,7 +26,7 @@ class DenseQP:
         self._proxqp = proxsuite.proxqp
         self._dims, self._eps = (n, n_eq, n_in), eps_abs
         self._solved = proxsuite.proxqp.QPSolverOutput.PROXQP_SOLVED
-        self._qp = None
+        self._qp: Any = None  # proxsuite's dense QP, made on the first solve
 
     def _fresh(self):
         qp = self._proxqp.dense.QP(*self._dims)

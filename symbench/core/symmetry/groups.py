@@ -146,7 +146,9 @@ class LegGroup:
         return np.array([[self._index[a * b] for b in self.elements] for a in self.elements])
 
     # --- action ------------------------------------------------------------------------
-    def act(self, g: GroupElement, x: Any, reflection_signs: Sequence[float] | None = None) -> Any:
+    def act(
+        self, g: GroupElement, x: Any, reflection_signs: Sequence[float] | np.ndarray | None = None
+    ) -> Any:
         """g . x for a numpy, torch or JAX array shaped (..., n_legs, n_features).
 
         `reflection_signs` (one per feature, from the schema) is required when g reflects.
@@ -160,7 +162,9 @@ class LegGroup:
         return f"LegGroup({self.name}, order={self.order}, legs={self.n_legs})"
 
 
-def act(g: GroupElement, x: Any, reflection_signs: Sequence[float] | None = None) -> Any:
+def act(
+    g: GroupElement, x: Any, reflection_signs: Sequence[float] | np.ndarray | None = None
+) -> Any:
     """Apply g to an array shaped (..., n_legs, n_features) of numpy, torch or JAX."""
     shape = tuple(x.shape)
     if len(shape) < 2 or shape[-2] != g.n_legs:

@@ -127,7 +127,7 @@ def train(
         )
 
     resumed = _resume(Path(checkpoint_dir), identity, trainer, config) if checkpoint_dir else None
-    if resumed is not None:
+    if resumed is not None and checkpoint_dir:
         state, best = resumed
         resume.check_best(Path(checkpoint_dir), result())
 

@@ -13,7 +13,6 @@ from symbench import EvaluationContext, relative_error, rotate_scene_about_gravi
 
 NAME = "invariance"
 DESCRIPTION = "max relative output change under random rotations about gravity + translations"
-TRIALS = 4
 
 
 def evaluate(context: EvaluationContext) -> dict:
@@ -21,7 +20,7 @@ def evaluate(context: EvaluationContext) -> dict:
     base = context.predict_raw(raw, ids)
     rng = np.random.default_rng([context.seed, 7])
     trials = []
-    for _ in range(TRIALS):
+    for _ in range(context.preset.evaluation.invariance_trials):
         angle = float(rng.uniform(0, 2 * np.pi))
         shift = rng.uniform(-1.0, 1.0, size=3)
         moved = rotate_scene_about_gravity(raw, angle)

@@ -6,14 +6,16 @@ from symbench import EvaluationContext, sample_efficiency_png
 from symbench.plugins.evaluators.torque_error import split_metrics
 
 NAME = "sample-efficiency"
-DESCRIPTION = "test RMSE after training on 10, 25, 50, 75 and 100 % of the training trajectories"
-FRACTIONS = (0.1, 0.25, 0.5, 0.75)
+DESCRIPTION = (
+    "test RMSE after training on the preset's fractions (fraction-F splits) and on all "
+    "(iid) of the training trajectories"
+)
 
 
 def evaluate(context: EvaluationContext) -> dict:
     curve = {}
-    for f in FRACTIONS:
-        curve[str(f)] = split_metrics(context.on_split(f"fraction-{f}"))["rmse"]
+    for f in context.preset.sample_efficiency.fractions:
+        curve[str(f)] = split_metrics(context.on_split(f"fraction-{f:g}"))["rmse"]
     curve["1.0"] = split_metrics(context.on_split("iid"))["rmse"]
     plot = context.output_dir / f"{context.robot.name}-{context.entry.name}-sample-efficiency.png"
     label = f"{context.entry.name} ({context.entry.backend})"

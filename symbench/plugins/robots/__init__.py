@@ -1,4 +1,10 @@
-"""Built-in robots: one `RobotEntry` per folder of robots/ at the repository root.
+"""Built-in robots: one `RobotEntry` per folder of the top-level robots/ (robot.toml, README.md).
+
+The specs are package data: the build maps the repository's robots/ folder into the wheel as
+`symbench/plugins/robots/specs/` (see [tool.setuptools] in pyproject.toml), read here with
+`importlib.resources`. A source checkout or an editable install has no specs/ folder (setuptools'
+editable finder cannot map a data-only subpackage), and reads robots/ in place, so an edited spec
+counts at once.
 
 A third-party package adds a robot the same way: implement `symbench_robots` and return a
 `RobotEntry` pointing at a folder with robot.toml (and README.md).
@@ -6,12 +12,26 @@ A third-party package adds a robot the same way: implement `symbench_robots` and
 
 from __future__ import annotations
 
+import os
 import tomllib
+from importlib.resources import files
 from pathlib import Path
 
 from symbench import RobotEntry, hookimpl
 
-ROBOTS_DIR = Path(__file__).resolve().parents[3] / "robots"
+
+def _robots_dir() -> Path:
+    installed = files(__name__) / "specs"
+    if not installed.is_dir():  # a source checkout or an editable install
+        return Path(__file__).resolve().parents[3] / "robots"
+    # A RobotEntry needs a real folder: true of every installed wheel (pip unpacks it), not of
+    # a zip import, which this package does not support.
+    if not isinstance(installed, os.PathLike):
+        raise RuntimeError(f"symbench's robot specs are not on the file system: {installed}")
+    return Path(installed)
+
+
+ROBOTS_DIR = _robots_dir()
 
 
 @hookimpl

@@ -1,14 +1,18 @@
 """Built-in splits: iid, unseen-heading, unseen-rotation and fraction-F (sample efficiency).
 
 Registered through the `symbench_splits` hook exactly as a third-party split would be.
+The fraction-F splits are those of the presets' sample-efficiency curves.
 """
 
 from __future__ import annotations
 
-from symbench import SplitEntry, hookimpl
+from symbench import PRESETS, SplitEntry, hookimpl
 from symbench.plugins.splits import assign as splits
 
-FRACTIONS = (0.1, 0.25, 0.5, 0.75)
+
+def fractions() -> list[float]:
+    """Every preset's sample-efficiency fractions, each once, ascending."""
+    return sorted({f for p in PRESETS.values() for f in p.sample_efficiency.fractions})
 
 
 @hookimpl
@@ -32,6 +36,6 @@ def symbench_splits() -> list[SplitEntry]:
             splits.fraction(share),
             f"iid with {share:g} of its training trajectories (sample efficiency)",
         )
-        for share in FRACTIONS
+        for share in fractions()
     ]
     return entries

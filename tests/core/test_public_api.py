@@ -1,0 +1,120 @@
+"""The public API for plugin authors: `from symbench import ...`.
+
+Every promised name resolves, `import symbench` stays light, and an entry that names a
+view, variant or backend that does not exist fails when it is made, reported under the name
+of the plugin that made it, while the other plugins keep working.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+import subprocess
+import sys
+
+import pytest
+from click.testing import CliRunner
+
+import symbench
+from symbench import (
+    EvaluatorEntry,
+    InvalidEntryError,
+    ModelEntry,
+    RobotEntry,
+    SplitEntry,
+    hookimpl,
+)
+from symbench.core.cli import build_cli
+from symbench.core.plugin.host import PluginHost, set_host
+
+HEAVY = ("torch", "jax", "flax", "mujoco", "dm_control", "pandas", "pyarrow")
+
+
+def test_every_public_name_resolves_and_is_documented():
+    assert len(set(symbench.__all__)) == len(symbench.__all__)
+    for name in symbench.__all__:
+        assert getattr(symbench, name) is not None, name
+        documented = re.search(rf"(?<![\w.]){re.escape(name)}(?!\w)", symbench.__doc__)
+        assert documented, f"{name} is missing from the module docstring"
+
+
+def test_an_unknown_name_is_an_attribute_error():
+    with pytest.raises(AttributeError, match="has no attribute 'ModelEntri'"):
+        _ = symbench.ModelEntri
+
+
+def test_import_symbench_loads_no_heavy_library():
+    code = f"import sys, symbench; print([m for m in {HEAVY!r} if m in sys.modules])"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "[]"
+
+
+def _model(**change):
+    fields = (
+        dict(name="m", backend="torch", view="leg_grouped", variant="acc", equivariant=True)
+        | change
+    )
+    return ModelEntry(**fields, build=lambda dims: None)
+
+
+@pytest.mark.parametrize(
+    ("change", "message"),
+    [
+        (
+            {"view": "graph"},
+            "model 'm': view 'graph' is not one of leg_grouped, vector, body_graph",
+        ),
+        ({"variant": "accel"}, "model 'm': variant 'accel' is not one of acc, next"),
+        ({"backend": "tensorflow"}, "model 'm': backend 'tensorflow' is not one of torch, jax"),
+        ({"name": "my model"}, "model name 'my model' is not a name"),
+        ({"name": "a/b"}, "model name 'a/b' is not a name"),
+        ({"equivariant": "yes"}, "model 'm': equivariant must be True or False"),
+    ],
+)
+def test_a_wrong_model_entry_fails_when_made(change, message):
+    with pytest.raises(InvalidEntryError) as error:
+        _model(**change)
+    assert str(error.value).startswith(message)
+
+
+def test_wrong_callables_and_rates_fail_when_made():
+    with pytest.raises(InvalidEntryError, match="build must be callable"):
+        ModelEntry("m", "torch", "leg_grouped", "acc", True, build="pkg.mod:build")
+    with pytest.raises(InvalidEntryError, match=r"learning_rate must be a number in \(0, 1\)"):
+        _model(learning_rate=0.0)
+    with pytest.raises(InvalidEntryError, match="evaluate must be callable"):
+        EvaluatorEntry("e", evaluate=None)
+    with pytest.raises(InvalidEntryError, match="assign must be callable"):
+        SplitEntry("s", assign=3)
+    with pytest.raises(InvalidEntryError, match="spec_dir must be a path"):
+        RobotEntry("r", spec_dir=None)
+
+
+class Misspelt:
+    """A third party's plugin whose second model names a view that does not exist."""
+
+    @hookimpl
+    def symbench_models(self):
+        return [_model(name="fine"), _model(name="typo", view="leg-grouped")]
+
+
+def test_a_wrong_entry_is_reported_under_its_plugin_and_breaks_nothing_else():
+    host = PluginHost()
+    host.load_entry_points("none")
+    host.register(Misspelt(), "misspelt")
+    set_host(host)
+    try:
+        listing = CliRunner().invoke(build_cli(), ["list", "models", "--json"])
+        run = CliRunner().invoke(build_cli(), ["run", "--model", "typo", "--robot", "hexa"])
+    finally:
+        set_host(None)
+    problem = (
+        "plugin 'misspelt' failed in symbench_models: InvalidEntryError: model 'typo': "
+        "view 'leg-grouped' is not one of leg_grouped, vector, body_graph"
+    )
+    assert listing.exit_code == 0
+    assert listing.stderr.strip() == f"warning: {problem}"
+    listed = {m["name"] for m in json.loads(listing.stdout)}
+    assert {"sdnn", "gnn", "ffnn"} <= listed and not listed & {"fine", "typo"}
+    assert run.exit_code == 1
+    assert run.stderr.splitlines()[-1].endswith(f"it may be lost with what failed: {problem}")
