@@ -1,8 +1,10 @@
-"""`symbench bench models`: training throughput (batch 64) and batch-1 inference latency.
+"""`symbench bench models`: training throughput (batch 64), how close it comes to the CPU's
+matmul limit, and batch-1 inference latency.
 
-Every model in both backends, on synthetic data shaped like the robot's, each measured
-uncompiled and compiled (torch.compile; JAX: one jitted call per step vs one jitted scan
-per epoch for training, eager vs jit for inference), so the table shows which wins.
+Every model in both backends, on synthetic data shaped like the robot's, in each backend's
+default mode, or (`--modes both`) uncompiled and compiled side by side (torch.compile; JAX:
+one jitted call per step vs one jitted scan per epoch for training, eager vs jit for
+inference), so the table shows which wins.
 """
 
 from __future__ import annotations
@@ -17,6 +19,7 @@ import numpy as np
 from rich.console import Console
 from rich.table import Table
 
+from symbench.core.bench.flops import MATMUL_SIZE, matmul_flops_per_s, step_flops_per_sample
 from symbench.core.common.cli_types import POSITIVE
 from symbench.core.data.model_dims import dims_of
 from symbench.core.plugin import registry
@@ -72,14 +75,23 @@ def latency_us(entry, views, compiled: bool, seconds: float) -> float:
     return 1e6 * statistics.median(times)
 
 
-def measure(entry, views, seconds: float) -> dict[str, Any]:
+def measure(entry, views, seconds: float, modes: tuple[bool, ...], say) -> dict[str, Any]:
+    """One row: training rate and latency in each mode, and how close training comes to the
+    backend's matmul limit (its best mode's samples/s x FLOPs per sample / matmul rate)."""
     row: dict[str, Any] = {"model": entry.name, "backend": entry.backend}
-    for compiled in (False, True):
+    for compiled in modes:
         mode = "compiled" if compiled else "plain"
+        say(f"training, {mode}")
         row[f"train_samples_per_s_{mode}"] = train_rate(entry, views, compiled, seconds)
+        say(f"batch-1 inference, {mode}")
         row[f"infer_batch1_us_{mode}"] = latency_us(entry, views, compiled, seconds)
-    row["train_best"] = max(("plain", "compiled"), key=lambda m: row[f"train_samples_per_s_{m}"])
-    row["infer_best"] = min(("plain", "compiled"), key=lambda m: row[f"infer_batch1_us_{m}"])
+    names = ["compiled" if c else "plain" for c in modes]
+    row["train_best"] = max(names, key=lambda m: row[f"train_samples_per_s_{m}"])
+    row["infer_best"] = min(names, key=lambda m: row[f"infer_batch1_us_{m}"])
+    say("counting FLOPs")
+    flops = step_flops_per_sample(entry, dims_of(views[entry.view]), BATCH)
+    row["train_flops_per_sample"] = flops
+    row["train_flops_per_s"] = flops * row[f"train_samples_per_s_{row['train_best']}"]
     return row
 
 
@@ -94,11 +106,22 @@ def measure(entry, views, seconds: float) -> dict[str, Any]:
 )
 @click.option("--backends", default=",".join(BACKENDS), show_default=True)
 @click.option(
-    "--seconds", default=2.0, show_default=True, type=POSITIVE, help="Timing window per figure."
+    "--modes",
+    type=click.Choice(["default", "both"]),
+    default="default",
+    show_default=True,
+    help="default: each backend's own choice (JAX compiled, torch plain); both: plain and "
+    "compiled side by side (torch.compile adds tens of seconds per model).",
+)
+@click.option(
+    "--seconds", default=1.0, show_default=True, type=POSITIVE, help="Timing window per figure."
 )
 @click.option("--json", "as_json", is_flag=True, help="Print JSON instead of a table.")
-def bench_models(robot_name: str, names: str, backends: str, seconds: float, as_json: bool) -> None:
-    """Training samples/s (batch 64) and batch-1 inference latency per model and backend."""
+def bench_models(
+    robot_name: str, names: str, backends: str, modes: str, seconds: float, as_json: bool
+) -> None:
+    """Training samples/s (batch 64), the fraction of the CPU's matmul rate that training
+    reaches, and batch-1 inference latency, per model and backend. Progress goes to stderr."""
     import os
 
     from symbench.core.robot.specs import load_robot
@@ -110,42 +133,68 @@ def bench_models(robot_name: str, names: str, backends: str, seconds: float, as_
         registry.model(n.strip(), b.strip()) for b in backends.split(",") for n in names.split(",")
     ]
     views = synthetic_views(robot.n_legs, 64 * BATCH, seed=0)
-    rows = [measure(e, views, seconds) for e in entries]
+    progress = Console(stderr=True)
+    started = time.perf_counter()
+    rows = []
+    for i, entry in enumerate(entries, start=1):
+
+        def say(what: str, i: int = i, entry=entry) -> None:
+            elapsed = time.perf_counter() - started
+            progress.print(
+                f"[{i}/{len(entries)}] {entry.name}/{entry.backend}: {what} ({elapsed:.0f} s)"
+            )
+
+        backend_modes = (
+            (False, True) if modes == "both" else (get_backend(entry.backend).default_compiled,)
+        )
+        rows.append(measure(entry, views, seconds, backend_modes, say))
+    matmul = {}
+    for backend in sorted({r["backend"] for r in rows}):
+        progress.print(f"{backend}: dense matmul rate ({MATMUL_SIZE}x{MATMUL_SIZE}, float32)")
+        matmul[backend] = matmul_flops_per_s(backend, seconds)
+    for r in rows:
+        r["matmul_flops_per_s"] = matmul[r["backend"]]
+        r["train_matmul_fraction"] = r["train_flops_per_s"] / matmul[r["backend"]]
     report = {
         "robot": robot_name,
         "batch": BATCH,
         "cpu_count": os.cpu_count(),
         "seconds_per_figure": seconds,
+        "seconds_total": round(time.perf_counter() - started, 1),
         "rows": rows,
     }
     if as_json:
         click.echo(json.dumps(report, indent=2))
         return
-    table = Table(title=f"symbench bench models ({robot_name}, {os.cpu_count()} CPUs)")
-    for col in (
-        "model",
-        "backend",
-        "train/s plain",
-        "train/s compiled",
-        "infer us plain",
-        "infer us compiled",
-    ):
+    Console().print(_table(report))
+
+
+def _table(report: dict[str, Any]) -> Table:
+    rows = report["rows"]
+    modes = [m for m in ("plain", "compiled") if any(f"train_samples_per_s_{m}" in r for r in rows)]
+    table = Table(title=f"symbench bench models ({report['robot']}, {report['cpu_count']} CPUs)")
+    columns = ["model", "backend"]
+    columns += [f"train/s {m}" for m in modes] + ["GFLOP/sample", "of matmul peak"]
+    columns += [f"infer us {m}" for m in modes]
+    for col in columns:
         table.add_column(col, justify="right")
     for r in rows:
         table.add_row(
             r["model"],
             r["backend"],
             *(
-                _mark(f"{r[f'train_samples_per_s_{m}']:,.0f}", r["train_best"] == m)
-                for m in ("plain", "compiled")
+                _figure(r, f"train_samples_per_s_{m}", "{:,.0f}", r["train_best"] == m)
+                for m in modes
             ),
-            *(
-                _mark(f"{r[f'infer_batch1_us_{m}']:.1f}", r["infer_best"] == m)
-                for m in ("plain", "compiled")
-            ),
+            f"{r['train_flops_per_sample'] / 1e9:.2e}",
+            f"{r['train_matmul_fraction']:.1%}",
+            *(_figure(r, f"infer_batch1_us_{m}", "{:.1f}", r["infer_best"] == m) for m in modes),
         )
-    Console().print(table)
+    return table
 
 
-def _mark(text: str, best: bool) -> str:
+def _figure(row: dict[str, Any], key: str, fmt: str, best: bool) -> str:
+    if key not in row:
+        return "-"
+    text = fmt.format(row[key])
     return f"[bold green]{text}[/]" if best else text
