@@ -22,13 +22,19 @@ from symbench import RobotEntry, hookimpl
 
 def _robots_dir() -> Path:
     installed = files(__name__) / "specs"
-    if not installed.is_dir():  # a source checkout or an editable install
-        return Path(__file__).resolve().parents[3] / "robots"
-    # A RobotEntry needs a real folder: true of every installed wheel (pip unpacks it), not of
-    # a zip import, which this package does not support.
-    if not isinstance(installed, os.PathLike):
-        raise RuntimeError(f"symbench's robot specs are not on the file system: {installed}")
-    return Path(installed)
+    if installed.is_dir():
+        # A RobotEntry needs a real folder: true of every installed wheel (pip unpacks it),
+        # not of a zip import, which symbench does not support.
+        if not isinstance(installed, os.PathLike):
+            raise RuntimeError(f"symbench's robot specs are not on the file system: {installed}")
+        return Path(installed)
+    checkout = Path(__file__).resolve().parents[3]
+    if (checkout / "pyproject.toml").is_file() and (checkout / "robots").is_dir():
+        return checkout / "robots"  # a source checkout or an editable install
+    raise RuntimeError(
+        f"symbench's built-in robot specs are missing: no {installed} (an installed wheel) and "
+        f"no robots/ beside pyproject.toml in {checkout} (a source checkout); reinstall symbench"
+    )
 
 
 ROBOTS_DIR = _robots_dir()
