@@ -31,7 +31,12 @@ def _cell(value: Any) -> str:
 
 def presets_table(doc: dict[str, dict[str, Any]]) -> Table:
     """One column per preset, one row per number, grouped by section."""
-    table = Table(title="symbench presets", show_lines=False)
+    table = Table(
+        title="symbench presets",
+        caption="dataset: one trajectory per combination of its axes (yaws: at least "
+        "yaws_per_turn, a whole number per symmetry sector; 0: just 0 and 180); "
+        "the budgets below it are not part of the dataset",
+    )
     table.add_column("section", style="bold")
     table.add_column("setting")
     for name in doc:

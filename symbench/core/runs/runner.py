@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING, Any
 
 from symbench.core.common.errors import SymbenchError, UnknownNameError
 from symbench.core.common.paths import writable_folder
+from symbench.core.data.presets import preset
 from symbench.core.data.provenance import (
     build_hyperparameters,
     checkpoint_file_hashes,
@@ -23,12 +24,19 @@ from symbench.core.data.provenance import (
     library_versions,
     plugin_info,
 )
-from symbench.core.data.presets import preset
 from symbench.core.data.schema import VARIANTS
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import ModelEntry
 from symbench.core.runs.evaluation import EvaluationContext, TrainedOnSplit, run_evaluators
-from symbench.core.runs.results import RecordBody, ResultRecord, write_record
+from symbench.core.runs.results import (
+    DatasetInfo,
+    ModelInfo,
+    RecordBody,
+    ResultRecord,
+    SampleCounts,
+    TrainingInfo,
+    write_record,
+)
 
 if TYPE_CHECKING:
     from symbench.core.training.loop import TrainConfig
@@ -198,43 +206,51 @@ def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> 
     epochs = len(model.history["train_loss"])
     record = RecordBody(
         created=datetime.now(UTC).isoformat(timespec="seconds"),
-        model={
-            "name": entry.name,
-            "backend": entry.backend,
-            "view": entry.view,
-            "variant": entry.variant,
-            "equivariant": entry.equivariant,
-            "hyperparameters": build_hyperparameters(entry, config.hyper),
-            "learning_rate": config.rate_for(entry),
-            "parameters": model.n_params,
-            "plugin": plugin_info(entry),
-        },
+        model=ModelInfo.model_validate(
+            {
+                "name": entry.name,
+                "backend": entry.backend,
+                "view": entry.view,
+                "variant": entry.variant,
+                "equivariant": entry.equivariant,
+                "hyperparameters": build_hyperparameters(entry, config.hyper),
+                "learning_rate": config.rate_for(entry),
+                "parameters": model.n_params,
+                "plugin": plugin_info(entry),
+            }
+        ),
         robot=spec.robot,
-        dataset={
-            "id": dataset.id,
-            "content_hash": dataset.content_hash,
-            "robot_spec_hash": dataset.metadata["robot_spec_hash"],
-            "preset": spec.preset,
-        },
+        dataset=DatasetInfo.model_validate(
+            {
+                "id": dataset.id,
+                "content_hash": dataset.content_hash,
+                "robot_spec_hash": dataset.metadata["robot_spec_hash"],
+                "preset": spec.preset,
+            }
+        ),
         split=spec.split,
         seed=spec.seed,
-        samples={
-            "train": len(train_set),
-            "val": len(val_set),
-            "test": len(test_set),
-            "train_trajectories": len(parts.train),
-            "val_trajectories": len(parts.val),
-            "test_trajectories": len(parts.test),
-        },
-        training={
-            "epochs": epochs,
-            "best_epoch": model.best_epoch,
-            "stopped_early": epochs < config.max_epochs,
-            "best_val_loss": float(min(model.history["val_loss"])),
-            "batch_size": config.batch_size,
-            "config": recorded_config(config, entry),
-            "checkpoint_sha256": best_checkpoint,
-        },
+        samples=SampleCounts.model_validate(
+            {
+                "train": len(train_set),
+                "val": len(val_set),
+                "test": len(test_set),
+                "train_trajectories": len(parts.train),
+                "val_trajectories": len(parts.val),
+                "test_trajectories": len(parts.test),
+            }
+        ),
+        training=TrainingInfo.model_validate(
+            {
+                "epochs": epochs,
+                "best_epoch": model.best_epoch,
+                "stopped_early": epochs < config.max_epochs,
+                "best_val_loss": float(min(model.history["val_loss"])),
+                "batch_size": config.batch_size,
+                "config": recorded_config(config, entry),
+                "checkpoint_sha256": best_checkpoint,
+            }
+        ),
         metrics=metrics,
         timings_s=timer.timings,
         hardware=hardware(),

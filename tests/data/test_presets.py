@@ -1,0 +1,228 @@
+"""One Preset object per preset holds every size, budget and horizon; `symbench presets`
+shows them, and the runner, the evaluators and the splits read their numbers from it."""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import re
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+from cli_invoke import error_line, invoke
+
+import symbench
+from symbench.core.common.arrays import ViewArrays
+from symbench.core.common.errors import UnknownNameError
+from symbench.core.data import load_dataset
+from symbench.core.data.presets import PRESETS, ClosedLoop, Evaluation, SampleEfficiency, Training
+from symbench.core.data.presets_cli import SECTIONS, _cell
+from symbench.core.plugin import registry
+from symbench.core.runs.evaluation import EvaluationContext, TrainedOnSplit
+from symbench.core.runs.runner import RunSpec, check_names, train_config
+from symbench.plugins.evaluators import closed_loop, invariance, sample_efficiency
+from symbench.plugins.splits import symbench_splits
+
+# The published board was made with these numbers: changing one is a new protocol.
+BUDGETS = {
+    "smoke": {"max_epochs": 3, "horizon_s": 0.3, "grid_seconds": 1.0},
+    "small": {"max_epochs": 60, "horizon_s": 10.0, "grid_seconds": 2.6},
+    "paper": {"max_epochs": 500, "horizon_s": 10.0, "grid_seconds": 10.0},
+}
+# What the dataset metadata stores (and so its content hash covers), in this order.
+GRID_KEYS = [
+    "name",
+    "description",
+    "inclinations_deg",
+    "headings_deg",
+    "yaws_per_turn",
+    "directions",
+    "leg_orders",
+    "seeds",
+    "seconds",
+    "yaws_deg",
+]
+
+
+def with_preset(monkeypatch, name: str, **groups) -> None:
+    """Replace groups (training=..., closed_loop=...) of a preset for one test."""
+    monkeypatch.setitem(PRESETS, name, dataclasses.replace(PRESETS[name], **groups))
+
+
+def test_the_budgets_are_those_of_the_published_board():
+    assert list(PRESETS) == list(BUDGETS)
+    for name, budget in BUDGETS.items():
+        p = PRESETS[name]
+        assert p.training.max_epochs == budget["max_epochs"]
+        assert p.closed_loop == ClosedLoop(seconds=budget["horizon_s"], scenarios=2)
+        assert p.dataset.seconds == budget["grid_seconds"]
+        assert p.evaluation == Evaluation(max_samples=4096, invariance_trials=4)
+        assert p.sample_efficiency == SampleEfficiency(fractions=(0.1, 0.25, 0.5, 0.75))
+
+
+def test_the_stored_grid_holds_the_grid_and_no_budget():
+    for p in PRESETS.values():
+        grid = p.grid(3)
+        assert list(grid) == GRID_KEYS
+        assert (grid["name"], grid["description"]) == (p.name, p.description)
+        assert grid["yaws_deg"] == list(p.dataset.yaws_deg(3))
+    assert PRESETS["small"].grid(6)["yaws_deg"] == [30.0 * k for k in range(12)]
+
+
+def test_presets_json_is_every_preset_with_every_number():
+    result = invoke("presets", "--json")
+    assert result.exit_code == 0, result.output
+    shown = json.loads(result.stdout)
+    assert list(shown) == list(PRESETS)
+    for name, p in PRESETS.items():
+        assert shown[name] == json.loads(json.dumps(dataclasses.asdict(p)))
+        assert list(shown[name]) == ["name", "description", *SECTIONS]
+    assert shown["paper"]["training"] == {"max_epochs": 500}
+    assert shown["smoke"]["closed_loop"] == {"seconds": 0.3, "scenarios": 2}
+    assert shown["small"]["sample_efficiency"] == {"fractions": [0.1, 0.25, 0.5, 0.75]}
+    assert shown["paper"]["dataset"]["inclinations_deg"] == [57.29577951308232, 90.0]
+
+
+def test_presets_table_has_a_row_per_number(monkeypatch):
+    monkeypatch.setenv("COLUMNS", "200")  # no wrapped cells
+    result = invoke("presets")
+    assert result.exit_code == 0, result.output
+    lines = result.stdout.splitlines()
+    assert all(name in lines[2] for name in PRESETS)  # the header
+    doc = {name: json.loads(json.dumps(dataclasses.asdict(p))) for name, p in PRESETS.items()}
+    for section in SECTIONS:
+        for setting in doc["small"][section]:
+            cells = [_cell(p[section][setting]) for p in doc.values()]
+            row = re.compile(r"│\s*" + r"\s*│\s*".join(map(re.escape, [setting, *cells])) + r"\s*│")
+            assert any(row.search(line) for line in lines), (section, setting, cells)
+    assert "57.2958" in result.stdout and "forward, backward, left, right" in result.stdout
+
+
+def test_a_wrong_presets_command_line_is_one_line():
+    assert "unexpected extra argument" in error_line(invoke("presets", "small"), 2)
+
+
+def test_the_run_takes_its_epoch_cap_from_the_preset(monkeypatch):
+    spec = RunSpec(model="sdnn", robot="hexa", preset="smoke", progress=False)
+    assert train_config(spec).max_epochs == 3
+    with_preset(monkeypatch, "smoke", training=Training(max_epochs=7))
+    assert train_config(spec).max_epochs == 7
+    assert train_config(dataclasses.replace(spec, max_epochs=2)).max_epochs == 2  # --max-epochs
+
+
+def test_an_unknown_preset_is_named_with_the_known_ones():
+    with pytest.raises(UnknownNameError, match=r"unknown preset 'smal'; did you mean small"):
+        check_names(RunSpec(model="sdnn", robot="hexa", preset="smal"))
+
+
+def _context(preset, dataset, retrain=None, test_trajectories=(), predict=None):
+    entry = SimpleNamespace(name="m", backend="torch", view="leg_grouped", variant="acc")
+    return EvaluationContext(
+        entry=entry,
+        dataset=dataset,
+        preset=preset,
+        split="unseen-rotation",  # not iid: sample efficiency retrains on iid
+        seed=0,
+        predict=predict,
+        test=None,
+        test_trajectories=np.asarray(test_trajectories),
+        output_dir=None,
+        retrain=retrain,
+    )
+
+
+def _trained(split: str, variant: str) -> TrainedOnSplit:
+    test = ViewArrays(
+        "leg_grouped",
+        variant,
+        6,
+        {"x": np.zeros((2, 6, 1))},
+        np.ones((2, 6, 3)),
+        np.zeros(2, dtype=np.int64),
+    )
+    return TrainedOnSplit(split, variant, lambda inputs: np.zeros((2, 6, 3)), test)
+
+
+@pytest.mark.parametrize("scenarios", [1, 3])
+def test_closed_loop_tracks_the_presets_scenarios_over_its_horizon(monkeypatch, scenarios):
+    simulated = []
+
+    def simulate(scenario):
+        simulated.append(scenario)
+        return SimpleNamespace(attached=True, arrays={})
+
+    def track(scenario, reference, policy, pd):
+        return SimpleNamespace(
+            attached=True, time_to_failure_s=0.05, joint_rmse_rad=0.0, failure=None
+        )
+
+    monkeypatch.setattr(symbench, "simulate", simulate)
+    monkeypatch.setattr(symbench, "track", track)
+    budget = ClosedLoop(seconds=0.05, scenarios=scenarios)
+    preset = dataclasses.replace(PRESETS["small"], closed_loop=budget)
+    dataset = SimpleNamespace(
+        spec=SimpleNamespace(control=SimpleNamespace(kp=20.0, kd=3.0)),
+        frames=None,
+        trajectory_ids=np.arange(4),
+        scenarios=[{"robot": "hexa", "yaw_deg": 10.0 * i} for i in range(4)],
+    )
+    context = _context(preset, dataset, retrain=_trained, test_trajectories=[3, 2, 1, 0])
+    metrics = closed_loop.evaluate(context)
+    assert metrics["horizon_s"] == 0.05 and metrics["references"] == scenarios
+    assert [s.seconds for s in simulated] == [0.05] * scenarios
+    assert [s.yaw_deg for s in simulated] == [30.0, 20.0, 10.0][:scenarios]
+
+
+def test_sample_efficiency_trains_on_the_presets_fractions(monkeypatch, tmp_path):
+    asked = []
+
+    def retrain(split, variant):
+        asked.append(split)
+        return _trained(split, variant)
+
+    monkeypatch.setattr(sample_efficiency, "sample_efficiency_png", lambda *args: None)
+    dataset = SimpleNamespace(spec=SimpleNamespace(name="hexa"))
+    context = _context(PRESETS["small"], dataset, retrain=retrain)
+    context.output_dir = tmp_path
+    curve = sample_efficiency.evaluate(context)["rmse_by_fraction"]
+    assert list(curve) == ["0.1", "0.25", "0.5", "0.75", "1.0"]  # the published metric keys
+    assert asked == ["fraction-0.1", "fraction-0.25", "fraction-0.5", "fraction-0.75", "iid"]
+    asked.clear()
+    context = _context(
+        dataclasses.replace(PRESETS["small"], sample_efficiency=SampleEfficiency((0.5,))),
+        dataset,
+        retrain=retrain,
+    )
+    context.output_dir = tmp_path
+    assert list(sample_efficiency.evaluate(context)["rmse_by_fraction"]) == ["0.5", "1.0"]
+    assert asked == ["fraction-0.5", "iid"]
+
+
+def test_transform_evaluators_spend_the_presets_evaluation_budget(smoke_hexa):
+    dataset = load_dataset(smoke_hexa.dataset_id)
+    evaluation = Evaluation(max_samples=5, invariance_trials=2)
+    preset = dataclasses.replace(PRESETS["smoke"], evaluation=evaluation)
+    context = _context(
+        preset,
+        dataset,
+        test_trajectories=dataset.trajectory_ids,
+        predict=lambda inputs: np.zeros((len(next(iter(inputs.values()))), 6, 3)),
+    )
+    raw, ids = context.test_raw()
+    assert len(ids) == 5 and all(len(v) == 5 for v in raw.values())
+    assert len(invariance.evaluate(context)["trials"]) == 2
+
+
+def _fraction_splits(names) -> list[str]:
+    return sorted(n for n in names if n.startswith("fraction-"))
+
+
+def test_the_fraction_splits_are_the_presets_fractions(monkeypatch):
+    fractions = {f for p in PRESETS.values() for f in p.sample_efficiency.fractions}
+    expected = sorted(f"fraction-{f:g}" for f in fractions)
+    assert _fraction_splits(registry.collect("splits")) == expected
+    assert expected == ["fraction-0.1", "fraction-0.25", "fraction-0.5", "fraction-0.75"]
+    with_preset(monkeypatch, "paper", sample_efficiency=SampleEfficiency((0.3, 0.5)))
+    registered = _fraction_splits(e.name for e in symbench_splits())
+    assert registered == sorted([*expected, "fraction-0.3"])
