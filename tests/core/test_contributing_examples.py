@@ -1,9 +1,14 @@
-"""The hook examples in CONTRIBUTING.md run and register what they claim to."""
+"""The plugin examples of the documentation run, register what they claim to, and use only
+the public API: the per-hook examples and the split plugin of docs/writing-plugins.md, the
+example plugin's files as quoted there, and the complete plugin of CONTRIBUTING.md."""
 
 from __future__ import annotations
 
+import ast
 import re
+import sys
 import types
+from collections.abc import Iterator
 from pathlib import Path
 
 import click
@@ -11,11 +16,16 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
+import symbench
+import symbench.testing
 from symbench.core.data.splits import SplitContext
 from symbench.core.plugin import registry
-from symbench.core.plugin.host import PluginHost
+from symbench.core.plugin.host import PluginHost, set_host
 
 ROOT = Path(__file__).resolve().parents[2]
+WRITING_PLUGINS = ROOT / "docs" / "writing-plugins.md"
+CONTRIBUTING = ROOT / "CONTRIBUTING.md"
+DOCUMENTS = [ROOT / "README.md", CONTRIBUTING, *sorted((ROOT / "docs").glob("*.md"))]
 HOOKS = (
     "symbench_models",
     "symbench_robots",
@@ -23,35 +33,90 @@ HOOKS = (
     "symbench_splits",
     "symbench_commands",
 )
+PYTHON_BLOCK = re.compile(r"```python\n(.*?)```", re.S)
+
+
+def section(text: str, heading: str) -> str:
+    """From `heading` (a level-2 heading) to the next level-2 heading."""
+    start = text.index(f"\n{heading}\n")
+    end = text.find("\n## ", start + len(heading) + 2)
+    return text[start : end if end >= 0 else len(text)]
 
 
 def hook_examples() -> dict[str, str]:
     """The first Python block under each hook's heading in 'The hooks' section."""
-    text = (ROOT / "CONTRIBUTING.md").read_text()
-    section = text[text.index("## The hooks") : text.index("\n## ", text.index("## The hooks") + 5)]
+    hooks = section(WRITING_PLUGINS.read_text(), "## The hooks")
     out = {}
     for hook in HOOKS:
-        start = section.index(f"### `{hook}(")
-        block = re.search(r"```python\n(.*?)```", section[start:], re.S)
+        start = hooks.index(f"### `{hook}(")
+        block = PYTHON_BLOCK.search(hooks, start)
+        assert block is not None, f"no Python example under {hook}"
         out[hook] = block.group(1)
     return out
 
 
+def block_named(path: Path, first_line: str) -> str:
+    """The Python block of `path` whose first line is `first_line` (a file-name comment)."""
+    found = [b for b in PYTHON_BLOCK.findall(path.read_text()) if b.startswith(first_line + "\n")]
+    assert len(found) == 1, f"{path.name}: {len(found)} blocks start with {first_line!r}"
+    return found[0]
+
+
+def module_from(code: str, name: str, source: str) -> types.ModuleType:
+    module = types.ModuleType(name)
+    module.__file__ = str(ROOT / "documentation_example" / "__init__.py")
+    exec(compile(code, source, "exec"), module.__dict__)
+    return module
+
+
 @pytest.fixture(scope="module")
 def plugins() -> dict[str, types.ModuleType]:
-    modules = {}
-    for hook, code in hook_examples().items():
-        module = types.ModuleType(f"contributing_{hook}")
-        module.__file__ = str(ROOT / "contributing_example" / "__init__.py")
-        exec(compile(code, f"CONTRIBUTING.md:{hook}", "exec"), module.__dict__)
-        modules[hook] = module
-    return modules
+    return {
+        hook: module_from(code, f"example_{hook}", f"writing-plugins.md:{hook}")
+        for hook, code in hook_examples().items()
+    }
 
 
 def host_with(module: types.ModuleType) -> PluginHost:
     host = PluginHost()
     host.register(module, module.__name__)
     return host
+
+
+# --- the public API only ----------------------------------------------------------------
+
+
+def imports_outside_the_public_api(code: str) -> list[str]:
+    """Every symbench import of `code` that is not `from symbench[.testing] import <public>`."""
+    public = {"symbench": set(symbench.__all__), "symbench.testing": set(symbench.testing.__all__)}
+    bad = []
+    for node in ast.walk(ast.parse(code)):
+        if isinstance(node, ast.Import):
+            bad += [a.name for a in node.names if a.name.startswith("symbench.")]
+        elif isinstance(node, ast.ImportFrom) and (node.module or "").startswith("symbench"):
+            allowed = public.get(node.module or "")
+            names = [a.name for a in node.names]
+            if allowed is None or not set(names) <= allowed:
+                bad.append(f"from {node.module} import {', '.join(names)}")
+    return bad
+
+
+@pytest.mark.parametrize("document", DOCUMENTS, ids=lambda p: p.name)
+def test_every_example_imports_only_the_public_api(document):
+    bad = []
+    for code in PYTHON_BLOCK.findall(document.read_text()):
+        bad += imports_outside_the_public_api(code)
+    assert bad == []
+
+
+def test_the_public_api_check_can_fail():
+    assert imports_outside_the_public_api("from symbench.core.plugin.entries import ModelEntry")
+    assert imports_outside_the_public_api("from symbench import load_dataset")
+    assert imports_outside_the_public_api("import symbench.core.data")
+    assert not imports_outside_the_public_api("from symbench import ModelEntry, hookimpl")
+
+
+# --- the per-hook examples of docs/writing-plugins.md ------------------------------------
 
 
 @pytest.mark.parametrize(
@@ -75,14 +140,18 @@ def test_evaluator_example_computes_its_metric(plugins):
     assert entry.evaluate(context) == {"max_abs_torque": 3.0}
 
 
-def test_split_example_labels_trajectories(plugins):
-    (entry,) = registry.collect("splits", host_with(plugins["symbench_splits"])).values()
-    scenarios = tuple({"inclination_deg": inc} for inc in [0, 30, 45, 90, 90, 0, 30, 60] * 3)
-    context = SplitContext(
+def split_context(inclinations: list[float]) -> SplitContext:
+    scenarios = tuple({"inclination_deg": inc} for inc in inclinations)
+    return SplitContext(
         "toy", np.arange(len(scenarios)), scenarios, np.full(len(scenarios), 10), 6, 0
     )
+
+
+def test_split_example_labels_trajectories(plugins):
+    (entry,) = registry.collect("splits", host_with(plugins["symbench_splits"])).values()
+    context = split_context([0, 30, 45, 90, 90, 0, 30, 60] * 3)
     labels = np.asarray(entry.assign(context))
-    steep = np.array([s["inclination_deg"] >= 60 for s in scenarios])
+    steep = context.values("inclination_deg").astype(float) >= 60
     assert (labels[steep] == "test").all()
     assert set(labels[~steep]) == {"train", "val"}
 
@@ -92,3 +161,76 @@ def test_commands_example_adds_a_command(plugins):
     host_with(plugins["symbench_commands"]).call("symbench_commands", cli=group)
     result = CliRunner().invoke(group, ["hello"])
     assert result.exit_code == 0 and result.output.strip() == "hello from my plugin"
+
+
+def test_complete_split_example_tests_on_the_steepest_slopes():
+    code = block_named(WRITING_PLUGINS, "# my_splits/__init__.py")
+    module = module_from(code, "my_splits", "writing-plugins.md:my_splits")
+    (entry,) = registry.collect("splits", host_with(module)).values()
+    context = split_context([30.0, 60.0, 90.0] * 4)
+    labels = np.asarray(entry.assign(context))
+    steepest = context.values("inclination_deg").astype(float) == 90.0
+    assert (labels[steepest] == "test").all() and set(labels[~steepest]) == {"train", "val"}
+    with pytest.raises(symbench.SymbenchError, match="single inclination"):
+        entry.assign(split_context([90.0] * 6))
+
+
+@pytest.mark.parametrize("name", ["__init__.py", "leg_attention.py"])
+def test_the_example_plugin_is_quoted_as_it_is(name):
+    path = f"examples/symbench-example-plugin/symbench_example_plugin/{name}"
+    quoted = re.search(
+        rf"File `{re.escape(path)}`:\n\n```python\n(.*?)```", WRITING_PLUGINS.read_text(), re.S
+    )
+    assert quoted is not None, f"docs/writing-plugins.md does not quote {path}"
+    assert quoted.group(1) == (ROOT / path).read_text()
+
+
+# --- the complete plugin of CONTRIBUTING.md ----------------------------------------------
+
+
+@pytest.fixture
+def my_plugin(monkeypatch) -> Iterator[types.ModuleType]:
+    """CONTRIBUTING.md's package `my_plugin`, importable, and registered with the built-ins."""
+    package = types.ModuleType("my_plugin")
+    package.__path__ = []  # a package, so that my_plugin.network can be imported
+    monkeypatch.setitem(sys.modules, "my_plugin", package)
+    network = module_from(
+        block_named(CONTRIBUTING, "# my_plugin/network.py"), "my_plugin.network", "network.py"
+    )
+    monkeypatch.setitem(sys.modules, "my_plugin.network", network)
+    package.network = network
+    exec(
+        compile(block_named(CONTRIBUTING, "# my_plugin/__init__.py"), "__init__.py", "exec"),
+        package.__dict__,
+    )
+    host = PluginHost()
+    host.load_entry_points("none")  # the built-in robots, for robot_group("hexa")
+    host.register(package, "my_plugin")
+    set_host(host)
+    yield package
+    set_host(None)
+
+
+def test_complete_plugin_registers_its_model_and_evaluator(my_plugin):
+    assert set(registry.collect("models")) >= {"leg-mixer/torch"}
+    assert set(registry.collect("evaluators")) >= {"worst-leg"}
+    assert registry.model("leg-mixer").equivariant
+
+
+def test_complete_plugin_evaluator_computes_its_metric(my_plugin):
+    target = np.zeros((2, 4, 3))
+    pred = target.copy()
+    pred[:, 2] = 3.0  # leg 2 is off by 3 N m in every joint
+    context = types.SimpleNamespace(
+        predictions=lambda: pred, test=types.SimpleNamespace(target=target)
+    )
+    metrics = registry.evaluator("worst-leg").evaluate(context)
+    assert metrics == {"worst_leg_rmse": 3.0, "rmse_per_leg": [0.0, 0.0, 3.0, 0.0]}
+
+
+def test_complete_plugin_passes_its_own_tests(my_plugin):
+    tests = module_from(
+        block_named(CONTRIBUTING, "# tests/test_my_plugin.py"), "test_my_plugin", "tests"
+    )
+    tests.test_leg_mixer_is_equivariant_on_hexa()
+    tests.test_leg_mixer_learns()

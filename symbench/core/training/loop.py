@@ -1,4 +1,4 @@
-"""One training protocol for every model and backend (DESIGN.md, Training).
+"""One training protocol for every model and backend (docs/concepts.md, Training).
 
 Adam, batch 64, the model's learning rate, MSE on normalized targets; stop when
 `stop_ratio` x validation loss exceeds the training loss `stop_patience` epochs in a row,
