@@ -35,6 +35,12 @@ class FiniteFloat(click.FloatRange):
             self.fail(f"{value!r} is not a finite number", param, ctx)
         return number
 
+    def _describe_range(self) -> str:
+        """click writes an unbounded range as 'x<=None'."""
+        if self.min is None and self.max is None:
+            return "finite"
+        return super()._describe_range()
+
 
 POSITIVE = FiniteFloat(min=0, min_open=True)
 NON_NEGATIVE = FiniteFloat(min=0)

@@ -41,7 +41,7 @@ def read_manifest(folder: Path) -> tuple[ImportManifest, list[TrajectoryFile]]:
     if not path.is_file():
         raise SymbenchError(
             f"{folder} has no {IMPORT_JSON} naming the robot and the record "
-            "period (see 'Importing a real robot's logs' in the README)"
+            "period (see docs/data-format.md, 'Importing a real robot's logs')"
         )
     try:
         manifest = ImportManifest.model_validate(read_json(path, "import"))

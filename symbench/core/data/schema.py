@@ -151,8 +151,8 @@ LEG_GROUPED_INPUTS: dict[str, Layout] = {  # keyed by the VARIANTS model entries
         "leg_grouped/next",
         _JOINT_STATE
         + (
-            _f("q_next", J, "joint positions one control period later (rad)"),
-            _f("qd_next", J, "joint velocities one control period later (rad/s)"),
+            _f("q_next", J, "joint positions at the next recorded sample (rad)"),
+            _f("qd_next", J, "joint velocities at the next recorded sample (rad/s)"),
         )
         + _BASE_IN_LEG_FRAME,
     ),
