@@ -1,6 +1,7 @@
 """The built-in architectures, registered once per backend with the same names and defaults.
 
-Each backend package holds one module per architecture with a `build(dims, **hyper)`;
+Each backend package holds one module per architecture with a `build(dims, **hyper)`, whose
+default sizes both backends read from `architectures` (and so do the descriptions below);
 `ffnn-leg` is the `ffnn` network fed the flattened leg-grouped view, which separates the
 effect of the representation from that of the architecture.
 """
@@ -10,6 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from symbench import Lazy, ModelEntry
+from symbench.plugins.architectures import FFNN, GNN, SDGNN, SDNN
 
 
 @dataclass(frozen=True)
@@ -24,7 +26,12 @@ class Architecture:
 
 ARCHITECTURES = (
     Architecture(
-        "ffnn", "ffnn", "vector", False, 1e-3, "MLP (3 x 256) on the stacked world-frame vector"
+        "ffnn",
+        "ffnn",
+        "vector",
+        False,
+        1e-3,
+        f"MLP ({FFNN.layers} x {FFNN.width}) on the stacked world-frame vector",
     ),
     Architecture(
         "ffnn-leg",
@@ -40,7 +47,7 @@ ARCHITECTURES = (
         "body_graph",
         False,
         1e-3,
-        "typical graph network (bodies as nodes, joints as edges), 5 steps",
+        f"typical graph network (bodies as nodes, joints as edges), {GNN.steps} steps",
     ),
     Architecture(
         "sdgnn",
@@ -48,7 +55,7 @@ ARCHITECTURES = (
         "leg_grouped",
         True,
         1e-3,
-        "symmetric graph network: base and feet as nodes, legs as edges, 2 steps",
+        f"symmetric graph network: base and feet as nodes, legs as edges, {SDGNN.steps} steps",
     ),
     Architecture(
         "sdnn",
@@ -56,7 +63,7 @@ ARCHITECTURES = (
         "leg_grouped",
         True,
         5e-4,
-        "shared per-leg MLPs, sum over legs, 2 processing steps",
+        f"shared per-leg MLPs, sum over legs, {SDNN.steps} processing steps",
     ),
 )
 

@@ -57,14 +57,12 @@ def torch_and_jax_outputs(name: str, n_legs: int) -> tuple[np.ndarray, np.ndarra
     net_j = entry_j.build(dims)
     converted = torch_to_flax(params)
     expected = jax.eval_shape(net_j.init, jax.random.PRNGKey(0), **inputs)["params"]
-    expected_shapes = {
-        k: v.shape for k, v in traverse_util.flatten_dict(expected, sep="/").items()
-    }
+    expected_shapes = {k: v.shape for k, v in traverse_util.flatten_dict(expected, sep="/").items()}
     assert {k: v.shape for k, v in converted.items()} == expected_shapes, (
         f"{name}: the backends' default networks differ in parameters"
     )
     tree = traverse_util.unflatten_dict(converted, sep="/")
-    y_jax = np.asarray(net_j.apply({"params": tree}, **inputs))
+    y_jax = np.asarray(jax.jit(net_j.apply)({"params": tree}, **inputs))
     return y_torch, y_jax
 
 

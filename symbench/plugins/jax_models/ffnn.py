@@ -6,6 +6,7 @@ import flax.linen as nn
 import jax.numpy as jnp
 
 from symbench import ModelDims
+from symbench.plugins.architectures import FFNN as DEFAULTS
 from symbench.plugins.jax_models.layers import LatentMLP
 
 
@@ -20,5 +21,5 @@ class FFNN(nn.Module):
         return nn.Dense(3 * self.n_legs, name="out")(h).reshape(-1, self.n_legs, 3)
 
 
-def build(dims: ModelDims, width: int = 256, layers: int = 3) -> FFNN:
+def build(dims: ModelDims, width: int = DEFAULTS.width, layers: int = DEFAULTS.layers) -> FFNN:
     return FFNN(dims.n_legs, width, layers)

@@ -7,6 +7,7 @@ import jax.numpy as jnp
 import numpy as np
 
 from symbench import ModelDims, schema
+from symbench.plugins.architectures import GNN as DEFAULTS
 from symbench.plugins.jax_models.layers import GraphNetwork
 
 
@@ -23,11 +24,11 @@ class GNN(nn.Module):
 
 def build(
     dims: ModelDims,
-    edge: int = 64,
-    node: int = 16,
-    glob: int = 16,
-    mlp_layers: int = 2,
-    steps: int = 5,
+    edge: int = DEFAULTS.edge,
+    node: int = DEFAULTS.node,
+    glob: int = DEFAULTS.glob,
+    mlp_layers: int = DEFAULTS.mlp_layers,
+    steps: int = DEFAULTS.steps,
 ) -> GNN:
     sizes = dict(edge=edge, node=node, glob=glob, mlp_layers=mlp_layers, steps=steps)
     return GNN(dims.n_legs, schema.body_graph(dims.n_legs, dims.variant).edges(), sizes)

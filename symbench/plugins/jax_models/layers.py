@@ -6,6 +6,7 @@ import flax.linen as nn
 import jax.numpy as jnp
 import numpy as np
 
+from symbench.plugins.architectures import LAYER_NORM_EPS
 from symbench.plugins.graphs import incidence
 
 
@@ -19,7 +20,7 @@ class LatentMLP(nn.Module):
     def __call__(self, x: jnp.ndarray) -> jnp.ndarray:
         for i in range(self.n_layers):
             x = nn.relu(nn.Dense(self.width, name=f"linear{i}")(x))
-        return nn.LayerNorm(epsilon=1e-5, use_fast_variance=False, name="norm")(x)
+        return nn.LayerNorm(epsilon=LAYER_NORM_EPS, use_fast_variance=False, name="norm")(x)
 
 
 class GraphNetwork(nn.Module):

@@ -10,6 +10,7 @@ import flax.linen as nn
 import jax.numpy as jnp
 
 from symbench import ModelDims
+from symbench.plugins.architectures import SDGNN as DEFAULTS
 from symbench.plugins.graphs import star_graph
 from symbench.plugins.jax_models.layers import GraphNetwork
 
@@ -30,11 +31,11 @@ class SDGNN(nn.Module):
 
 def build(
     dims: ModelDims,
-    edge: int = 64,
-    node: int = 16,
-    glob: int = 16,
-    mlp_layers: int = 2,
-    steps: int = 2,
+    edge: int = DEFAULTS.edge,
+    node: int = DEFAULTS.node,
+    glob: int = DEFAULTS.glob,
+    mlp_layers: int = DEFAULTS.mlp_layers,
+    steps: int = DEFAULTS.steps,
 ) -> SDGNN:
     return SDGNN(
         dims.n_legs, dict(edge=edge, node=node, glob=glob, mlp_layers=mlp_layers, steps=steps)

@@ -10,6 +10,7 @@ import flax.linen as nn
 import jax.numpy as jnp
 
 from symbench import ModelDims
+from symbench.plugins.architectures import SDNN as DEFAULTS
 from symbench.plugins.jax_models.layers import LatentMLP
 
 
@@ -30,5 +31,10 @@ class SDNN(nn.Module):
         return nn.Dense(3, name="out")(h)
 
 
-def build(dims: ModelDims, latent: int = 128, mlp_layers: int = 2, steps: int = 2) -> SDNN:
+def build(
+    dims: ModelDims,
+    latent: int = DEFAULTS.latent,
+    mlp_layers: int = DEFAULTS.mlp_layers,
+    steps: int = DEFAULTS.steps,
+) -> SDNN:
     return SDNN(latent, mlp_layers, steps)

@@ -8,6 +8,7 @@ import torch
 from torch import nn
 
 from symbench import ModelDims
+from symbench.plugins.architectures import FFNN as DEFAULTS
 from symbench.plugins.torch_models.layers import LatentMLP
 
 
@@ -22,5 +23,5 @@ class FFNN(nn.Module):
         return self.out(self.body(x.flatten(1))).reshape(-1, self.n_legs, 3)
 
 
-def build(dims: ModelDims, width: int = 256, layers: int = 3) -> FFNN:
+def build(dims: ModelDims, width: int = DEFAULTS.width, layers: int = DEFAULTS.layers) -> FFNN:
     return FFNN(math.prod(dims.shape("x")), dims.n_legs, width, layers)

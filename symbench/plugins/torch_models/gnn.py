@@ -6,6 +6,7 @@ import torch
 from torch import nn
 
 from symbench import ModelDims, schema
+from symbench.plugins.architectures import GNN as DEFAULTS
 from symbench.plugins.torch_models.layers import GraphNetwork
 
 
@@ -25,10 +26,10 @@ class GNN(nn.Module):
 
 def build(
     dims: ModelDims,
-    edge: int = 64,
-    node: int = 16,
-    glob: int = 16,
-    mlp_layers: int = 2,
-    steps: int = 5,
+    edge: int = DEFAULTS.edge,
+    node: int = DEFAULTS.node,
+    glob: int = DEFAULTS.glob,
+    mlp_layers: int = DEFAULTS.mlp_layers,
+    steps: int = DEFAULTS.steps,
 ) -> GNN:
     return GNN(dims, edge=edge, node=node, glob=glob, mlp_layers=mlp_layers, steps=steps)

@@ -6,6 +6,7 @@ import numpy as np
 import torch
 from torch import nn
 
+from symbench.plugins.architectures import LAYER_NORM_EPS
 from symbench.plugins.graphs import incidence
 
 
@@ -17,7 +18,7 @@ class LatentMLP(nn.Module):
         self.n_layers = n_layers
         for i in range(n_layers):
             self.add_module(f"linear{i}", nn.Linear(n_in if i == 0 else width, width))
-        self.norm = nn.LayerNorm(width)
+        self.norm = nn.LayerNorm(width, eps=LAYER_NORM_EPS)
 
     def forward(self, x: torch.Tensor) -> torch.Tensor:
         for i in range(self.n_layers):

@@ -10,11 +10,14 @@ import torch
 from torch import nn
 
 from symbench import ModelDims
+from symbench.plugins.architectures import SDGNN as DEFAULTS
 from symbench.plugins.graphs import star_graph
 from symbench.plugins.torch_models.layers import GraphNetwork
 
 
 class SDGNN(nn.Module):
+    node_types: torch.Tensor  # a buffer: typed, or mypy reads it through Module.__getattr__
+
     def __init__(self, n_legs: int, n_features: int, **sizes: int):
         super().__init__()
         edges, types = star_graph(n_legs)
@@ -29,11 +32,11 @@ class SDGNN(nn.Module):
 
 def build(
     dims: ModelDims,
-    edge: int = 64,
-    node: int = 16,
-    glob: int = 16,
-    mlp_layers: int = 2,
-    steps: int = 2,
+    edge: int = DEFAULTS.edge,
+    node: int = DEFAULTS.node,
+    glob: int = DEFAULTS.glob,
+    mlp_layers: int = DEFAULTS.mlp_layers,
+    steps: int = DEFAULTS.steps,
 ) -> SDGNN:
     return SDGNN(
         dims.n_legs,

@@ -10,6 +10,7 @@ import torch
 from torch import nn
 
 from symbench import ModelDims
+from symbench.plugins.architectures import SDNN as DEFAULTS
 from symbench.plugins.torch_models.layers import LatentMLP
 
 
@@ -31,5 +32,10 @@ class SDNN(nn.Module):
         return self.out(self.dec(h))
 
 
-def build(dims: ModelDims, latent: int = 128, mlp_layers: int = 2, steps: int = 2) -> SDNN:
+def build(
+    dims: ModelDims,
+    latent: int = DEFAULTS.latent,
+    mlp_layers: int = DEFAULTS.mlp_layers,
+    steps: int = DEFAULTS.steps,
+) -> SDNN:
     return SDNN(dims.shape("x")[-1], latent, mlp_layers, steps)

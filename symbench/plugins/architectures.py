@@ -1,0 +1,53 @@
+"""Default sizes of the built-in architectures: the one place both backends read them from.
+
+The torch and JAX twins of a model must be the same network for their results to be
+comparable, so neither keeps numbers of its own: each backend's `build` takes its keyword
+defaults from the instances below (keyword defaults, because a run records every keyword the
+build function receives, read from its signature), and the zoo's descriptions quote them.
+tests/models/test_backend_parity.py checks that the twins compute the same function.
+
+The values are those the published leaderboard was trained with: changing one changes the
+networks' parameter shapes, and the board no longer describes the code.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+LAYER_NORM_EPS = 1e-5
+"""Epsilon of every LatentMLP's LayerNorm: torch's default, which flax's (1e-6) is not."""
+
+
+@dataclass(frozen=True)
+class MLPSizes:
+    """ffnn (and ffnn-leg): `layers` hidden layers of `width` units."""
+
+    width: int
+    layers: int
+
+
+@dataclass(frozen=True)
+class SDNNSizes:
+    """sdnn: per-leg MLPs of `mlp_layers` layers and `latent` units; `steps` processing steps."""
+
+    latent: int
+    mlp_layers: int
+    steps: int
+
+
+@dataclass(frozen=True)
+class GraphSizes:
+    """gnn and sdgnn: latent widths of edges, nodes and the global; MLP depth; message-passing
+    steps."""
+
+    edge: int
+    node: int
+    glob: int
+    mlp_layers: int
+    steps: int
+
+
+FFNN = MLPSizes(width=256, layers=3)
+SDNN = SDNNSizes(latent=128, mlp_layers=2, steps=2)
+GNN = GraphSizes(edge=64, node=16, glob=16, mlp_layers=2, steps=5)
+SDGNN = GraphSizes(edge=64, node=16, glob=16, mlp_layers=2, steps=2)
