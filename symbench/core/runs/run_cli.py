@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import time
 from pathlib import Path
 
 import click
@@ -11,7 +12,12 @@ from rich.table import Table
 from symbench.core.common.cli_types import EPOCHS, SEED, WORKERS, CommaList, WritableFolder
 from symbench.core.data.presets import PRESETS
 from symbench.core.runs.results import ResultRecord
-from symbench.core.runs.runner import DEFAULT_EVALUATORS, RunSpec
+from symbench.core.runs.runner import (
+    DEFAULT_EVALUATORS,
+    FIRST_RESULT_EVALUATORS,
+    RunSpec,
+    train_config,
+)
 from symbench.core.runs.runner import run as run_spec
 
 
@@ -35,10 +41,16 @@ from symbench.core.runs.runner import run as run_spec
 )
 @click.option(
     "--evaluators",
-    default=",".join(DEFAULT_EVALUATORS),
-    show_default=True,
+    default=None,
     type=CommaList(),
-    help="Comma-separated evaluator names (see `symbench list evaluators`).",
+    help="Comma-separated evaluator names (see `symbench list evaluators`); default: "
+    f"{', '.join(FIRST_RESULT_EVALUATORS)}, which need one training.",
+)
+@click.option(
+    "--full",
+    is_flag=True,
+    help=f"The full evaluation of sweeps and boards: {', '.join(DEFAULT_EVALUATORS)} "
+    "(three more trainings and closed-loop rollouts).",
 )
 @click.option(
     "--output",
@@ -63,12 +75,20 @@ def run(
     seed: int,
     preset: str,
     variant: str | None,
-    evaluators: list[str],
+    evaluators: list[str] | None,
+    full: bool,
     output: Path,
     workers: int,
     max_epochs: int | None,
 ) -> None:
-    """Train and evaluate MODEL on ROBOT (generating the dataset when missing)."""
+    """Train and evaluate MODEL on ROBOT (generating the dataset when missing).
+
+    Each stage is announced with the time so far; the simulation and training bars estimate
+    what remains."""
+    if evaluators is not None and full:
+        raise click.UsageError("--full and --evaluators choose the evaluators twice; use one")
+    if evaluators is None:
+        evaluators = list(DEFAULT_EVALUATORS if full else FIRST_RESULT_EVALUATORS)
     console = Console()
     spec = RunSpec(
         model=model_name,
@@ -83,7 +103,16 @@ def run(
         workers=workers,
         max_epochs=max_epochs,
     )
-    record = run_spec(spec, on_stage=lambda stage: console.print(f"[bold]{stage}[/]"))
+    started = time.perf_counter()
+
+    def announce(stage: str) -> None:
+        console.print(f"[bold]{stage}[/] [dim]({time.perf_counter() - started:.0f} s so far)[/]")
+
+    console.print(
+        f"{model_name} on {robot_name}: dataset, one training (at most "
+        f"{train_config(spec).max_epochs} epochs), then {', '.join(evaluators)}"
+    )
+    record = run_spec(spec, on_stage=announce)
     console.print(metrics_table(record))
     console.print(f"result record: {spec.record_path}")
 

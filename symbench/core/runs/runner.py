@@ -41,7 +41,10 @@ from symbench.core.runs.results import (
 if TYPE_CHECKING:
     from symbench.core.training.loop import TrainConfig
 
+# The full evaluation (sweeps, boards); `symbench run` starts with the first-result set, which
+# needs one training only: generalization trains twice more and closed-loop once more.
 DEFAULT_EVALUATORS = ("torque-error", "equivariance", "invariance", "generalization", "closed-loop")
+FIRST_RESULT_EVALUATORS = ("torque-error", "equivariance", "invariance")
 
 
 @dataclass(frozen=True)

@@ -17,7 +17,14 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+from rich.progress import (
+    BarColumn,
+    MofNCompleteColumn,
+    Progress,
+    TextColumn,
+    TimeElapsedColumn,
+    TimeRemainingColumn,
+)
 
 from symbench.core.common.arrays import ViewArrays
 from symbench.core.common.errors import SymbenchError
@@ -270,6 +277,8 @@ def _progress_bar(config: TrainConfig, entry: ModelEntry) -> Progress:
         TextColumn("epochs"),
         TextColumn("{task.fields[loss]}"),
         TimeElapsedColumn(),
+        TextColumn("at most"),
+        TimeRemainingColumn(),  # from the epoch cap: early stopping only shortens it
         disable=not config.progress,
         transient=False,
     )
