@@ -38,9 +38,7 @@ BUILTIN_MODELS = {
 
 def run(*args: str) -> subprocess.CompletedProcess:
     env = dict(os.environ, SYMBENCH_PLUGINS="none")
-    return subprocess.run(
-        [SYMBENCH, *args], capture_output=True, text=True, timeout=120, env=env
-    )
+    return subprocess.run([SYMBENCH, *args], capture_output=True, text=True, timeout=120, env=env)
 
 
 @pytest.fixture(scope="module")
@@ -98,8 +96,7 @@ def test_plugins_and_list_give_json(builtins):
         (
             ("lst",),
             2,
-            f"Error: unknown command 'lst'; did you mean list? "
-            f"(known: {', '.join(CORE_COMMANDS)})",
+            f"Error: unknown command 'lst'; did you mean list? (known: {', '.join(CORE_COMMANDS)})",
         ),
         (
             ("list", "robts"),

@@ -105,11 +105,16 @@ def test_action_on_torch_and_jax_matches_numpy():
 def test_checks_fail_for_a_wrong_permutation():
     """A 'C6' whose generator swaps two legs is not the rotation group: the checks say so."""
     wrong = LegGroup("not-C6", [GroupElement((1, 0, 2, 3, 4, 5))])
-    assert wrong.order != 6
+    assert wrong.order == 2  # the swap and the identity
     # an element set that mixes in a wrong permutation is not closed and lacks inverses
-    elements = list(groups.cyclic(6).elements[:-1]) + [GroupElement((1, 0, 2, 3, 4, 5))]
+    c6 = groups.cyclic(6).elements
+    elements = [*c6[:-1], GroupElement((1, 0, 2, 3, 4, 5))]
     violations = axiom_violations(elements)
-    assert any("not closed" in v for v in violations)
+    assert f"not closed: {c6[1]!r} * {c6[4]!r} = {c6[5]!r}" in violations  # r^5 left out
+    assert f"not closed: {c6[1]!r} * {elements[-1]!r} = {c6[1] * elements[-1]!r}" in violations
+    assert [v for v in violations if not v.startswith("not closed: ")] == [
+        f"no inverse for {c6[1]!r}"  # r^1, whose inverse r^5 was left out
+    ]
 
 
 def test_homomorphism_check_fails_for_a_wrong_action():

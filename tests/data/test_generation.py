@@ -46,10 +46,14 @@ def test_detached_trajectories_are_recorded_and_left_out(home):
     assert (report.n_trajectories, report.n_failed) == (3, 2)
     ds = load_dataset("magneto-fails")
     assert ds.trajectory_ids.tolist() == [0, 2, 4]
-    failures = ds.metadata["failures"]
-    assert [f["id"] for f in failures] == [1, 3]
-    assert "left the surface" in failures[0]["failure"]
-    assert "QP not solved" in failures[1]["failure"]
+    assert ds.metadata["failures"] == [
+        {"id": 1, "scenario": grid[1].to_dict(), "failure": "foot 2 left the surface at 0.3 s"},
+        {
+            "id": 3,
+            "scenario": grid[3].to_dict(),
+            "failure": "simulation stopped: whole-body QP not solved (infeasible)",
+        },
+    ]
     assert set(ds.view("vector", "acc").trajectory.tolist()) == {0, 2, 4}
 
 
@@ -97,9 +101,11 @@ def test_a_damaged_file_is_detected_and_regenerating_fixes_it(smoke_hexa, damage
         path.unlink()
     with pytest.raises(SymbenchError) as err:
         load_dataset(smoke_hexa.dataset_id)
-    message = str(err.value)
-    assert "trajectories/00002.parquet" in message
-    assert "symbench data generate --robot hexa --preset smoke" in message
+    assert str(err.value) == (
+        "dataset 'hexa-climb-smoke-v4': trajectories/00002.parquet changed, truncated or "
+        "missing (SHA-256 mismatch); fix it with: symbench data generate --robot hexa "
+        "--preset smoke"
+    )
     report = generate("hexa", "smoke", simulator=fake_simulate, show_progress=False)
     assert report.n_simulated == 1 and report.content_hash == smoke_hexa.content_hash
     assert path.read_bytes() == data

@@ -8,6 +8,7 @@ import numpy as np
 import pyarrow as pa
 import pyarrow.parquet as pq
 import pytest
+from cli_invoke import error_line
 from click.testing import CliRunner
 from synthetic_raw import synthetic_raw
 
@@ -16,6 +17,7 @@ from symbench.core.common.errors import SymbenchError
 from symbench.core.data import load_dataset, schema
 from symbench.core.data.columns import flatten
 from symbench.core.data.importer import export_dataset, import_logs
+from symbench.core.plugin import registry
 
 
 @pytest.mark.parametrize("fmt", ["parquet", "npz"])
@@ -110,7 +112,7 @@ def test_a_folder_without_import_json_is_explained(home, tmp_path):
         import_logs(folder, "logs")
 
 
-def test_cli_import_info_and_export(smoke_hexa, tmp_path):
+def test_cli_import_info_and_export(smoke_hexa, home, tmp_path):
     runner = CliRunner()
     cli = build_cli()
     out = runner.invoke(cli, ["data", "info", smoke_hexa.dataset_id, "--json"])
@@ -124,9 +126,31 @@ def test_cli_import_info_and_export(smoke_hexa, tmp_path):
         assert total <= 4
     out = runner.invoke(cli, ["data", "export", smoke_hexa.dataset_id, str(tmp_path / "x")])
     assert out.exit_code == 0, out.output
+    assert out.output.split() == ["exported", smoke_hexa.dataset_id, "to", str(tmp_path / "x")]
     out = runner.invoke(cli, ["data", "import", str(tmp_path / "x"), "--id", "again"])
-    assert out.exit_code == 0 and "imported 4 trajectories" in out.output
+    assert out.exit_code == 0, out.output
+    again = load_dataset("again")
+    assert " ".join(out.output.split()) == (  # rich wraps at the terminal's width
+        f"imported 4 trajectories ({info['samples']} samples) as again; "
+        f"content hash {again.content_hash}"
+    )
+    assert again.n_samples.sum() == info["samples"]
     out = runner.invoke(cli, ["data", "info", "hexa-climb-paper-v4"])
-    assert out.exit_code != 0 and "symbench data generate --robot hexa --preset paper" in out.output
+    assert error_line(out, 1) == (
+        f"Error: dataset 'hexa-climb-paper-v4' is not in the cache "
+        f"({home / 'datasets' / 'hexa-climb-paper-v4'}); generate it with: "
+        "symbench data generate --robot hexa --preset paper"
+    )
     out = runner.invoke(cli, ["data", "info", smoke_hexa.dataset_id])
-    assert out.exit_code == 0 and "unseen-rotation" in out.output
+    assert out.exit_code == 0, out.output
+    parts = ("train", "val", "test")
+    rows = [  # the table of splits, as the JSON above gives it
+        [cell.strip() for cell in line.split("│")[1:-1]]
+        for line in out.output.splitlines()
+        if line.count("│") == 6
+    ]
+    assert rows == [
+        [name] + [f"{counts[p]['trajectories']} / {counts[p]['samples']}" for p in parts] + ["yes"]
+        for name, counts in info["splits"].items()
+    ]
+    assert [row[0] for row in rows] == sorted(registry.collect("splits"))

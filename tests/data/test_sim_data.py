@@ -10,9 +10,8 @@ from symbench.core.data.frames import LegFrames
 from symbench.core.data.raw_action import act_on_raw, rotate_scene_about_gravity
 from symbench.core.data.views import build_view
 from symbench.core.robot.specs import load_robot
+from symbench.core.sim import rollout as sim  # MuJoCo and dm-control: hard dependencies
 from symbench.core.sim.scenario import Scenario
-
-sim = pytest.importorskip("symbench.core.sim.rollout")
 
 SECONDS = 0.3
 

@@ -2,18 +2,21 @@
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import pytest
-from conftest import short_grid
 from synthetic_raw import fake_simulate
 
 from symbench import hookimpl
 from symbench.core.common.errors import SymbenchError
 from symbench.core.data import load_dataset
 from symbench.core.data.generation import generate
+from symbench.core.data.presets import preset
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import SplitEntry
 from symbench.core.plugin.host import PluginHost, set_host
+from symbench.core.robot.specs import load_robot
 
 STANDARD = (
     "iid",
@@ -24,6 +27,15 @@ STANDARD = (
     "fraction-0.5",
     "fraction-0.75",
 )
+
+
+def short_grid(robot: str, name: str = "small", seconds: float = 0.1):
+    """A preset's scenarios, shortened so that the stand-in makes them in milliseconds (here,
+    not in tests/data/conftest.py: `from conftest import` finds whichever conftest module was
+    imported last, tests/run's when tests of several folders are named)."""
+    spec = load_robot(robot)
+    grid = preset(name).scenarios(robot, spec.n_legs, spec.group.rotation_order)
+    return [dataclasses.replace(s, seconds=seconds) for s in grid]
 
 
 @pytest.fixture
@@ -106,7 +118,7 @@ def test_smoke_supports_every_standard_split(smoke_hexa):
     parts = {name: ds.split_indices(name, 0) for name in STANDARD}
     for name, part in parts.items():
         train, val, test = (set(ids.tolist()) for ids in (part.train, part.val, part.test))
-        assert min(len(train), len(val), len(test)) == 1, name
+        assert min(len(train), len(val), len(test)) >= 1, name
         assert len(train | val | test) == len(train) + len(val) + len(test), name
         assert train | val | test <= {0, 1, 2, 3}, name
     iid = parts["iid"]

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import contextlib
 import math
+import re
 import tempfile
 from pathlib import Path
 from unittest import mock
@@ -55,10 +56,11 @@ def stand_in(target: str) -> mock.MagicMock:
 
 def refused_or_reached(result, options: tuple[str, ...]) -> bool:
     """True when the values got through; else the refusal names one of `options`."""
-    if result.exit_code == 1 and "Error: reached" in result.stderr:
+    if result.exit_code == 1 and error_line(result, 1) == "Error: reached":
         return True
     message = error_line(result, 2)
-    assert any(f"'{option}'" in message for option in options), message
+    named = "|".join(re.escape(option) for option in options)
+    assert re.fullmatch(rf"Error: Invalid value for '({named})': \S.*", message), message
     return False
 
 

@@ -1,10 +1,11 @@
 """Whatever a dataset's metadata.json holds, even re-hashed by hand, reading the dataset gives
-a one-line error naming it, or a dataset whose counts agree with its files."""
+one of the one-line errors that name it, or exactly what the metadata and its files say."""
 
 from __future__ import annotations
 
 import contextlib
 import json
+import re
 import shutil
 
 import pytest
@@ -20,6 +21,7 @@ from symbench.core.data import load_dataset
 from symbench.core.data.generation import generate
 from symbench.core.data.metadata import METADATA, content_hash
 from symbench.core.data.storage import step_count
+from symbench.core.plugin import registry
 
 DATASET = "hexa-climb-smoke-v4"
 
@@ -33,24 +35,74 @@ def template(tmp_path_factory):
     return template, json.loads((template / METADATA).read_text())
 
 
+def refusals(root) -> list[str]:
+    """Every message symbench gives for a bad metadata.json (whole messages, as patterns):
+    each names the dataset or its metadata file first, and says what is wrong."""
+    dataset, path = re.escape(f"dataset '{DATASET}'"), re.escape(str(root / METADATA))
+    repair = r"(\S.*|None)"  # the repair command the (edited) metadata holds
+    return [
+        rf"{dataset}: {path}: not valid JSON \(.+\)",
+        rf"{path} is not a symbench dataset's metadata",
+        rf"{dataset} has format version .+, this symbench reads 1; {repair}",
+        rf"{dataset}: metadata.json was edited or damaged \(content hash mismatch\); "
+        rf"rebuild it with: {repair}",
+        rf"{dataset}: {path} is malformed: \S.*: \S.*",
+        rf"{dataset}: trajectories/.+ changed, truncated or missing \(SHA-256 mismatch\); "
+        rf"fix it with: {repair}",
+        rf"{dataset}: trajectories/.+ holds \d+ steps, metadata.json says -?\d+; "
+        rf"fix it with: {repair}",
+        rf"{dataset} has no trajectories \(\d+ failed\)",
+    ]
+
+
 def check_reading(template, metadata: bytes) -> None:
-    """`symbench data info` on the template with `metadata` as its metadata.json."""
+    """`symbench data info` on the template with `metadata` as its metadata.json: one of the
+    refusals above, or exactly what that metadata.json and the files say."""
     with fresh_home() as home:
         root = shutil.copytree(template, home / "datasets" / DATASET)
         (root / METADATA).write_bytes(metadata)
         result = invoke("data", "info", DATASET, "--json")
         if result.exit_code != 0:
-            assert DATASET in error_line(result, 1) or str(root) in error_line(result, 1)
+            line = error_line(result, 1).removeprefix("Error: ")
+            assert any(re.fullmatch(p, line) for p in refusals(root)), line
             return
         info = json.loads(result.stdout)
+        splits = info.pop("splits")
+        meta = json.loads(metadata)  # what was written, read here independently of symbench
+        files = {r["id"]: root / r["file"] for r in meta["trajectories"]}
+        steps = {i: step_count(f) for i, f in files.items()}
+        assert info == {
+            "id": DATASET,
+            "robot": meta["robot"],
+            "source": meta["source"],
+            "preset": meta.get("preset"),
+            "content_hash": meta["content_hash"],
+            "trajectories": len(steps),
+            "failed": len(meta["failures"]),
+            "failures": meta["failures"],
+            "samples": sum(steps.values()) - len(steps),
+            "record_period_s": meta["record_period_s"],
+            "size_bytes": sum(f.stat().st_size for f in files.values()),
+            "versions": meta["versions"],
+            "split_seed": 0,
+        }
         dataset = load_dataset(DATASET)
-        steps = [step_count(root / r["file"]) for r in dataset.metadata["trajectories"]]
-        assert info["trajectories"] == len(steps)
-        assert info["samples"] == sum(steps) - len(steps)
+        assert list(splits) == list(registry.collect("splits"))
+        for name, counts in splits.items():
+            try:
+                parts = dataset.split_indices(name, 0)
+            except SymbenchError as error:  # an edited scenario grid may not support it
+                assert counts == {"error": str(error)}, name
+                continue
+            assert counts == {
+                part: {"trajectories": len(ids), "samples": sum(steps[i] - 1 for i in ids)}
+                for part, ids in (("train", parts.train), ("val", parts.val), ("test", parts.test))
+            } | {"disjoint": True}, name
         try:  # a robot edited into another is refused when the data is used
             assert len(dataset.view("leg_grouped", "acc")) == info["samples"]
         except SymbenchError as error:
-            assert "\n" not in str(error) and DATASET in str(error)
+            subject = rf"dataset '{re.escape(DATASET)}'( was made with|:) "
+            assert re.fullmatch(rf"{subject}\S.*", str(error)), str(error)
 
 
 @given(data=FILE_BYTES)

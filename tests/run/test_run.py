@@ -75,8 +75,22 @@ def test_cli_prints_a_table_and_writes_the_record(smoke_home, tmp_path):
         catch_exceptions=False,
     )
     assert result.exit_code == 0, result.output
-    assert "torque-error" in result.stdout and "rmse" in result.stdout
-    assert read_record(tmp_path / "hexa__iid__sdnn__acc__torch__seed0.json").split == "iid"
+    path = tmp_path / "hexa__iid__sdnn__acc__torch__seed0.json"
+    record = read_record(path)
+    assert record.split == "iid"
+    table, written = result.stdout.split("result record:")
+    rows = [
+        [cell.strip() for cell in line.split(bar)[1:-1]]
+        for line in table.splitlines()
+        for bar in ("┃", "│")
+        if line.count(bar) == 4
+    ]
+    assert rows == [  # every metric of the record, as it holds it
+        ["evaluator", "metric", "value"],
+        *(["torque-error", k, f"{v:.4g}"] for k, v in record.metrics["torque-error"].items()),
+    ]
+    assert ["torque-error", "rmse", f"{record.metrics['torque-error']['rmse']:.4g}"] in rows
+    assert "".join(written.split()) == str(path)  # the path, wrapped at the terminal's width
 
 
 def test_names_are_checked_before_any_work(tmp_path):

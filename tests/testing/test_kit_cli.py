@@ -6,9 +6,11 @@ import json
 
 import broken_models
 import pytest
+from cli_invoke import error_line
 from click.testing import CliRunner
 
 from symbench.core.cli import cli
+from symbench.core.plugin import registry
 from symbench.core.plugin.host import PluginHost, set_host
 
 
@@ -26,13 +28,23 @@ def test_sdnn_passes_in_both_backends_as_json():
 
 def test_non_claiming_model_is_reported_without_failing():
     result = invoke("--model", "ffnn-leg", "--robot", "hexa", "--backend", "torch")
-    assert result.exit_code == 0 and "not equivariant (claims none)" in result.output
-    assert "shift 5" in result.output
+    assert result.exit_code == 0, result.output
+    title, *table = result.output.splitlines()
+    assert title.strip() == "ffnn-leg/torch on C6 (6 legs): not equivariant (claims none)"
+    rows = [[cell.strip() for cell in line.split("│")[1:-1]] for line in table]
+    rows = [row for row in rows if row]
+    assert [row[0] for row in rows] == ["identity", *(f"shift {k}" for k in range(1, 6))]
+    assert rows[0][1:] == ["(0, 1, 2, 3, 4, 5)", "0.00e+00", "0.00e+00"]
+    assert rows[5][1] == "(5, 0, 1, 2, 3, 4)"
+    assert all(float(error) > 1e-3 for row in rows[1:] for error in row[2:])  # measured
 
 
 def test_unknown_model_names_the_closest():
     result = invoke("--model", "sdn", "--robot", "hexa")
-    assert result.exit_code != 0 and "did you mean sdnn" in result.output
+    known = ", ".join(sorted({entry.name for entry in registry.collect("models").values()}))
+    assert error_line(result, 1) == (
+        f"Error: unknown model 'sdn'; did you mean sdnn, sdgnn? (known: {known})"
+    )
 
 
 @pytest.fixture
@@ -47,4 +59,7 @@ def host_with_broken_model():
 
 def test_broken_claim_exits_non_zero(host_with_broken_model):
     result = invoke("--model", "broken-sdnn", "--robot", "hexa", "--backend", "torch")
-    assert result.exit_code == 1 and "BROKEN" in result.output
+    assert result.exit_code == 1, result.output
+    assert result.output.splitlines()[0].strip() == (
+        "broken-sdnn/torch on C6 (6 legs): BROKEN: claims equivariance and breaks it"
+    )
