@@ -30,7 +30,8 @@ def hook_names() -> list[str]:
 
 
 def missing_from(names: list[str], texts: list[str]) -> list[str]:
-    return [n for n in names if not any(n in t for t in texts)]
+    """Names that no text mentions as a whole word (a prefix of a longer name does not count)."""
+    return [n for n in names if not any(re.search(rf"\b{re.escape(n)}\b", t) for t in texts)]
 
 
 def texts_of_tests() -> list[str]:
@@ -65,7 +66,7 @@ def test_every_hook_has_a_test():
 
 
 def test_the_meta_check_catches_a_new_hook():
-    fake = ["symbench_teleport_robot"]
+    fake = ["symbench_teleport_robot", "symbench_model"]  # new, and a prefix of a real hook
     assert missing_from(hook_names() + fake, hook_sections()) == fake
     assert missing_from(hook_names() + fake, texts_of_tests()) == fake
 
