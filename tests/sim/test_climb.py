@@ -3,13 +3,16 @@
 from __future__ import annotations
 
 import json
+import re
 
 import numpy as np
 import pytest
+from cli_invoke import error_line
 from click.testing import CliRunner
 
 from symbench.core.cli import build_cli
 from symbench.core.common.errors import SymbenchError
+from symbench.core.plugin import registry
 from symbench.core.robot.specs import load_robot
 from symbench.core.sim.arena import Arena
 from symbench.core.sim.gait import SETTLE
@@ -151,7 +154,10 @@ def test_sim_check_and_bench_commands():
         bench["control_steps_per_s"] / bench["raw_mj_step_per_s"]
     )
     result = runner.invoke(cli, ["sim", "check", "--robot", "hexx"])
-    assert result.exit_code != 0 and "hexa" in result.output
+    known = ", ".join(sorted(registry.collect("robots")))
+    assert error_line(result, 1) == (
+        f"Error: unknown robot 'hexx'; did you mean hexa? (known: {known})"
+    )
     result = runner.invoke(cli, ["sim", "mjcf", "--robot", "nona", "--inclination", "90"])
     assert result.exit_code == 0 and result.output.count('_magnet" body="leg') == 9
 
@@ -191,4 +197,13 @@ def test_a_plugin_robot_that_falls_makes_sim_check_fail(tmp_path):
     finally:
         set_host(None)
     assert result.exit_code == 1, result.output
-    assert "DETACHED" in result.output
+    status = result.output.splitlines()[0]  # the rest: distances, errors, torques
+    detached = (
+        r"stance foot of leg\(s\) \d+(, \d+)* left the surface"
+        r"|base tilted more than 30 degrees from the surface normal"
+        r"|base dropped to \d+\.\d{3} m above the surface"
+    )
+    scenario = r"weakling at 90 deg \(heading 0, yaw 0, forward\)"
+    assert re.fullmatch(
+        rf"{scenario}, 0\.\d\d s: DETACHED \(t=0\.\d{{3}} s: ({detached})\)", status
+    ), status

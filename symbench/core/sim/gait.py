@@ -14,7 +14,7 @@ is its start.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -53,6 +53,17 @@ def min_jerk(u: float) -> tuple[float, float, float]:
 
 def hermite(p0, v0, p1, v1, u: float, duration: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Cubic Hermite segment at u in [0, 1]: position, velocity, acceleration."""
+    return hermite_at(hermite_points(p0, v0, p1, v1, duration), u, duration)
+
+
+def hermite_points(p0, v0, p1, v1, duration: float) -> np.ndarray:
+    """(4, 3) control rows of a Hermite segment, the part of `hermite` that does not depend
+    on u: a swing builds them once per segment instead of at every control step."""
+    return np.array([p0, duration * v0, p1, duration * v1])
+
+
+def hermite_at(points: np.ndarray, u: float, duration: float):
+    """Position, velocity and acceleration at u of the segment with `points`."""
     u2, u3, T = u * u, u * u * u, duration
     basis = np.array(
         [
@@ -66,7 +77,7 @@ def hermite(p0, v0, p1, v1, u: float, duration: float) -> tuple[np.ndarray, np.n
             [(12 * u - 6) / T**2, (6 * u - 4) / T**2, (-12 * u + 6) / T**2, (6 * u - 2) / T**2],
         ]
     )
-    pos, vel, acc = basis @ np.array([p0, T * v0, p1, T * v1])
+    pos, vel, acc = basis @ points
     return pos, vel, acc
 
 
@@ -92,6 +103,9 @@ class GaitPlan:
     normal: np.ndarray  # (3,) surface normal
     base_start: np.ndarray  # (3,)
     soles_start: np.ndarray  # (n, 3) sole contact points at t = 0 (world)
+    # the current slot's step ends and swing segments: `targets` runs at every control step
+    # and these change once per slot (read-only arrays, handed out as targets)
+    _memo: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
     @staticmethod
     def stagger(spec: RobotSpec, order: tuple[int, ...]) -> np.ndarray:
@@ -116,20 +130,21 @@ class GaitPlan:
         errors and creep never add up from step to step."""
         g, n = self.spec.gait, self.spec.n_legs
         s = self.slot_index(t)
-        tau = t - SETTLE - s * self.slot if s >= 0 else 0.0  # time into the slot
+        slot = g.step_duration
+        tau = t - SETTLE - s * slot if s >= 0 else 0.0  # time into the slot
         phase = np.zeros(n, dtype=int)  # all STANCE (0); np.full costs several times more
-        magnet = np.ones(n)
+        magnet = np.empty(n)
+        magnet.fill(1.0)  # np.ones is a Python function: several times slower
         # base: s full slots plus the minimum-jerk share of the current one
         shift = g.step_length / n
-        u, du, ddu = min_jerk(tau / self.slot) if s >= 0 else (0.0, 0.0, 0.0)
+        u, du, ddu = min_jerk(tau / slot) if s >= 0 else (0.0, 0.0, 0.0)
         base_pos = self.base_start + ((max(s, 0) + u) * shift) * self.direction
-        base_vel = (du * shift / self.slot) * self.direction
-        base_acc = (ddu * shift / self.slot**2) * self.direction
+        base_vel = (du * shift / slot) * self.direction
+        base_acc = (ddu * shift / slot**2) * self.direction
         leg, pos, vel, acc = -1, ZERO3, ZERO3, ZERO3
         if s >= 0:
             leg = self.order[s % n]
-            start = self.soles_start[leg] + ((s // n) * g.step_length) * self.direction
-            goal = start + g.step_length * self.direction
+            start, goal = self._step_ends(s)
             if tau < g.release:
                 phase[leg], magnet[leg], pos = RELEASE, 0.0, start
             elif tau < g.release + g.swing:
@@ -141,12 +156,42 @@ class GaitPlan:
                 magnet[leg] = min_jerk((tau - g.release - g.swing) / MAGNET_RAMP)[0]
         return GaitTargets(phase, magnet, base_pos, base_vel, base_acc, s, leg, pos, vel, acc)
 
+    def _step_ends(self, s: int) -> tuple[np.ndarray, np.ndarray]:
+        """Start and goal (world) of the sole stepping in slot s, computed once per slot."""
+        memo = self._memo
+        if memo.get("slot") != s:
+            step = self.spec.gait.step_length
+            start = (
+                self.soles_start[self.order[s % self.spec.n_legs]]
+                + ((s // self.spec.n_legs) * step) * self.direction
+            )
+            goal = start + step * self.direction
+            start.flags.writeable = goal.flags.writeable = False
+            memo["slot"], memo["ends"] = s, (start, goal)
+        return memo["ends"]
+
     def _swing(self, start: np.ndarray, goal: np.ndarray, u: float):
         """Two Hermite segments through the raised mid point, at swing fraction u."""
-        g = self.spec.gait
-        half = g.swing / 2
-        mid = 0.5 * (start + goal) + g.swing_height * self.normal
-        mid_vel = (goal - start) / g.swing * 1.5  # matches a cubic's peak speed
+        half = self.spec.gait.swing / 2
+        first, second = self._swing_segments(start, goal)
         if u < 0.5:
-            return hermite(start, ZERO3, mid, mid_vel, u / 0.5, half)
-        return hermite(mid, mid_vel, goal, ZERO3, (u - 0.5) / 0.5, half)
+            return hermite_at(first, u / 0.5, half)
+        return hermite_at(second, (u - 0.5) / 0.5, half)
+
+    def _swing_segments(self, start: np.ndarray, goal: np.ndarray) -> tuple[np.ndarray, ...]:
+        """The two segments' Hermite points for a swing from `start` to `goal`, kept while
+        the same two arrays come back (a swing passes the same liftoff and goal at every
+        step; the objects are held here, so their identity is not reused)."""
+        memo = self._memo
+        key = memo.get("swing_ends")
+        if key is None or key[0] is not start or key[1] is not goal:
+            g = self.spec.gait
+            half = g.swing / 2
+            mid = 0.5 * (start + goal) + g.swing_height * self.normal
+            mid_vel = (goal - start) / g.swing * 1.5  # matches a cubic's peak speed
+            memo["swing_ends"] = (start, goal)
+            memo["swing"] = (
+                hermite_points(start, ZERO3, mid, mid_vel, half),
+                hermite_points(mid, mid_vel, goal, ZERO3, half),
+            )
+        return memo["swing"]

@@ -27,13 +27,29 @@ def leg_ik(spec: RobotSpec, ankle: np.ndarray) -> np.ndarray:
     A target out of reach is clipped to the nearest reachable knee angle (straight or
     folded leg), so the controller never stops mid-step; the tracking error shows it.
     """
-    lc, lf, lt = (spec.leg.lengths[k] for k in ("coxa", "femur", "tibia"))
-    x, y, height = ankle[..., 0], ankle[..., 1], ankle[..., 2]
-    q = np.empty(ankle.shape)  # filled in place: this runs at every control step
-    q[..., 0] = np.arctan2(y, x)
-    reach = np.hypot(x, y) - lc
-    cos_knee = (reach * reach + height * height - (lf * lf + lt * lt)) / (2 * lf * lt)
-    q2 = q[..., 2]
-    np.negative(np.arccos(np.minimum(np.maximum(cos_knee, -1.0), 1.0)), out=q2)  # tibia bends down
-    q[..., 1] = np.arctan2(height, reach) - np.arctan2(lt * np.sin(q2), lf + lt * np.cos(q2))
-    return q
+    return LegIK(spec)(ankle)
+
+
+class LegIK:
+    """`leg_ik` for one spec, its length constants looked up once: the controller calls it
+    at every control step, where the lookups cost as much as the arithmetic. The constants
+    are the same Python numbers the expressions used to build each call, so the results are
+    bit for bit those of `leg_ik`."""
+
+    def __init__(self, spec: RobotSpec):
+        self.lc, self.lf, self.lt = (spec.leg.lengths[k] for k in ("coxa", "femur", "tibia"))
+        lf, lt = self.lf, self.lt
+        self.sum_sq = lf * lf + lt * lt
+        self.twice_product = 2 * lf * lt
+
+    def __call__(self, ankle: np.ndarray) -> np.ndarray:
+        lc, lf, lt = self.lc, self.lf, self.lt
+        x, y, height = ankle[..., 0], ankle[..., 1], ankle[..., 2]
+        q = np.empty(ankle.shape)  # filled in place: this runs at every control step
+        q[..., 0] = np.arctan2(y, x)
+        reach = np.hypot(x, y) - lc
+        cos_knee = (reach * reach + height * height - self.sum_sq) / self.twice_product
+        q2 = q[..., 2]
+        np.negative(np.arccos(np.minimum(np.maximum(cos_knee, -1.0), 1.0)), out=q2)  # bends down
+        q[..., 1] = np.arctan2(height, reach) - np.arctan2(lt * np.sin(q2), lf + lt * np.cos(q2))
+        return q

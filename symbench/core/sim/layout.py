@@ -85,21 +85,67 @@ class ModelLayout:
             reduced=np.concatenate([base_dof + np.arange(6), dof.reshape(-1)]),
         )
 
-    def _heights(self, data, geoms: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        normal = data.geom_xmat[self.surface_geom][2::3]  # the plane's z axis
-        return (data.geom_xpos[geoms] - data.geom_xpos[self.surface_geom]) @ normal, normal
+    def probe(self, model, data) -> SurfaceProbe:
+        """The surface distance readouts bound to one MjData (see `SurfaceProbe`)."""
+        return SurfaceProbe(self, model, data)
 
     def sole_distances(self, model, data) -> np.ndarray:
+        """(n,) distance from each pad's envelope to the surface (`SurfaceProbe`)."""
+        return self.probe(model, data).sole_distances()
+
+    def pad_clearances(self, data) -> np.ndarray:
+        """(n,) distance from each pad's nearest contact sphere to the surface."""
+        return self.probe(None, data).pad_clearances()
+
+
+class SurfaceProbe:
+    """How far each foot is from the climbing surface, read from MuJoCo's geom poses.
+
+    Bound to one MjData: its arrays' views and the pads' sizes are looked up once, since the
+    rollout reads these at every control step (a MjData attribute read builds a new array
+    object each time). The arithmetic is the same whether bound once or per call.
+    """
+
+    def __init__(self, layout: ModelLayout, model, data):
+        self._xpos, self._xmat = data.geom_xpos, data.geom_xmat
+        self._origin = self._xpos[layout.surface_geom]  # a view: follows the data
+        self._normal = self._xmat[layout.surface_geom][2::3]  # the plane's z axis
+        self._sole, self._pads = layout.sole_geom, layout.pad_geom
+        # pads first: both slices of the gathered rows then start 16-byte aligned, as the
+        # separately gathered arrays did (4 x 3 doubles per leg)
+        self._both = np.concatenate([layout.pad_geom.ravel(), layout.sole_geom])
+        self._n_pads = layout.pad_geom.size
+        self._pad_shape = (*layout.pad_geom.shape, 3)
+        if model is not None:
+            self._radius = model.geom_size[layout.sole_geom, 0]
+            self._half = model.geom_size[layout.sole_geom, 1]
+
+    def sole_distances(self) -> np.ndarray:
         """(n,) distance from each pad's envelope (a disk around its contact spheres) to the
         climbing surface, the exact cylinder-plane distance from MuJoCo's geom poses: a
         foot is in contact when this is below the spec's 5 mm."""
-        height, normal = self._heights(data, self.sole_geom)
-        axis = np.abs(data.geom_xmat[self.sole_geom][:, 2::3] @ normal)  # disk axis vs normal
-        radius, half = model.geom_size[self.sole_geom, 0], model.geom_size[self.sole_geom, 1]
-        return height - half * axis - radius * np.sqrt(np.maximum(0.0, 1.0 - axis**2))
+        return self._sole_distances((self._xpos[self._sole] - self._origin) @ self._normal)
 
-    def pad_clearances(self, data) -> np.ndarray:
+    def pad_clearances(self) -> np.ndarray:
         """(n,) distance from each pad's nearest contact sphere to the surface: the magnet
         pulls (MuJoCo's adhesion acts) when this is within the sphere's contact margin."""
-        height, _ = self._heights(data, self.pad_geom)
+        return self._pad_clearances((self._xpos[self._pads] - self._origin) @ self._normal)
+
+    def both(self) -> tuple[np.ndarray, np.ndarray]:
+        """(`sole_distances`, `pad_clearances`), with one gather and one subtraction for
+        both; each product with the normal keeps its own shape (the same BLAS calls)."""
+        rel = self._xpos[self._both] - self._origin
+        k = self._n_pads
+        return (
+            self._sole_distances(rel[k:] @ self._normal),
+            self._pad_clearances(rel[:k].reshape(self._pad_shape) @ self._normal),
+        )
+
+    def _sole_distances(self, height: np.ndarray) -> np.ndarray:
+        axis = np.abs(self._xmat[self._sole][:, 2::3] @ self._normal)  # disk axis vs normal
+        radius, half = self._radius, self._half
+        return height - half * axis - radius * np.sqrt(np.maximum(0.0, 1.0 - axis**2))
+
+    @staticmethod
+    def _pad_clearances(height: np.ndarray) -> np.ndarray:
         return height.min(axis=1) - PAD_SPHERE_RADIUS

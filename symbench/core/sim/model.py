@@ -4,7 +4,7 @@ Per leg: coxa (yaw), femur and tibia (pitch) hinges driven by torque servos, a p
 3-axis ankle gimbal (spring and damper) carrying the magnetic foot, and an `<adhesion>`
 actuator whose full control (1) pulls the foot with the spec's magnet force. Only the base
 ellipsoid and the foot soles collide, and only with the surface. Settings that keep the
-simulator symmetric (DESIGN.md): Newton solver, no noslip iterations, a base that touches
+simulator symmetric (docs/concepts.md): Newton solver, no noslip iterations, a base that touches
 the plane in one point, a raised impratio so that feet do not creep down a wall.
 """
 
@@ -20,7 +20,7 @@ SURFACE = "surface"
 BASE = "base"
 IMPRATIO = 10.0
 ANKLE_AXES = ((0.0, 1.0, 0.0), (0.0, 0.0, 1.0), (1.0, 0.0, 0.0))  # in the tibia frame
-# Pitch joints turn about -y so that a positive femur angle lifts the leg (robots/README).
+# Pitch joints turn about -y so that a positive femur angle lifts the leg (each robot's README).
 JOINT_AXES = ((0.0, 0.0, 1.0), (0.0, -1.0, 0.0), (0.0, -1.0, 0.0))
 # Collision bits: the surface touches robot geoms, robot geoms never touch each other.
 SURFACE_BITS, ROBOT_BITS = (1, 2), (2, 1)
