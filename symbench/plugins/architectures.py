@@ -1,9 +1,10 @@
 """Default sizes of the built-in architectures: the one place both backends read them from.
 
 The torch and JAX twins of a model must be the same network for their results to be
-comparable, so neither keeps numbers of its own: each backend's `build` takes its keyword
-defaults from the instances below (keyword defaults, because a run records every keyword the
-build function receives, read from its signature), and the zoo's descriptions quote them.
+comparable, so neither keeps numbers of its own: each backend's `build` is made by `builder`
+from the instances below, and the zoo's descriptions quote them. A run records every keyword
+the build function receives, read from its signature: `builder` writes the fields, with
+these defaults, into that signature.
 tests/models/test_backend_parity.py checks that the twins compute the same function.
 
 The values are those the published leaderboard was trained with: changing one changes the
@@ -12,7 +13,12 @@ networks' parameter shapes, and the board no longer describes the code.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import inspect
+from collections.abc import Callable
+from dataclasses import dataclass, fields, replace
+from typing import Any, TypeVar
+
+from symbench import ModelDims
 
 LAYER_NORM_EPS = 1e-5
 """Epsilon of every LatentMLP's LayerNorm: torch's default, which flax's (1e-6) is not."""
@@ -51,3 +57,28 @@ FFNN = MLPSizes(width=256, layers=3)
 SDNN = SDNNSizes(latent=128, mlp_layers=2, steps=2)
 GNN = GraphSizes(edge=64, node=16, glob=16, mlp_layers=2, steps=5)
 SDGNN = GraphSizes(edge=64, node=16, glob=16, mlp_layers=2, steps=2)
+
+
+Sizes = TypeVar("Sizes", MLPSizes, SDNNSizes, GraphSizes)
+
+
+def builder(defaults: Sizes, make: Callable[[ModelDims, Sizes], Any]) -> Callable[..., Any]:
+    """`build(dims, **sizes)` for a `ModelEntry`: `make(dims, defaults with sizes replaced)`,
+    its signature naming every size with its default; an unknown size is a TypeError."""
+    names = [f.name for f in fields(defaults)]
+
+    def build(dims: ModelDims, **sizes: int) -> Any:
+        unknown = sorted(set(sizes) - set(names))
+        if unknown:
+            raise TypeError(f"unknown size(s) {', '.join(unknown)} (known: {', '.join(names)})")
+        return make(dims, replace(defaults, **sizes))
+
+    keyword = inspect.Parameter.POSITIONAL_OR_KEYWORD
+    build.__signature__ = inspect.Signature(  # type: ignore[attr-defined]
+        [inspect.Parameter("dims", keyword, annotation=ModelDims)]
+        + [
+            inspect.Parameter(n, keyword, default=getattr(defaults, n), annotation=int)
+            for n in names
+        ]
+    )
+    return build

@@ -5,8 +5,8 @@ from __future__ import annotations
 import flax.linen as nn
 import jax.numpy as jnp
 
-from symbench import ModelDims
 from symbench.plugins.architectures import FFNN as DEFAULTS
+from symbench.plugins.architectures import builder
 from symbench.plugins.jax_models.layers import LatentMLP
 
 
@@ -21,5 +21,4 @@ class FFNN(nn.Module):
         return nn.Dense(3 * self.n_legs, name="out")(h).reshape(-1, self.n_legs, 3)
 
 
-def build(dims: ModelDims, width: int = DEFAULTS.width, layers: int = DEFAULTS.layers) -> FFNN:
-    return FFNN(dims.n_legs, width, layers)
+build = builder(DEFAULTS, lambda dims, s: FFNN(dims.n_legs, s.width, s.layers))

@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
+from dataclasses import asdict
+
 import flax.linen as nn
 import jax.numpy as jnp
 import numpy as np
 
-from symbench import ModelDims, schema
+from symbench import schema
 from symbench.plugins.architectures import GNN as DEFAULTS
+from symbench.plugins.architectures import builder
 from symbench.plugins.jax_models.layers import GraphNetwork
 
 
@@ -22,13 +25,9 @@ class GNN(nn.Module):
         return y.reshape(-1, self.n_legs, 3)
 
 
-def build(
-    dims: ModelDims,
-    edge: int = DEFAULTS.edge,
-    node: int = DEFAULTS.node,
-    glob: int = DEFAULTS.glob,
-    mlp_layers: int = DEFAULTS.mlp_layers,
-    steps: int = DEFAULTS.steps,
-) -> GNN:
-    sizes = dict(edge=edge, node=node, glob=glob, mlp_layers=mlp_layers, steps=steps)
-    return GNN(dims.n_legs, schema.body_graph(dims.n_legs, dims.variant).edges(), sizes)
+build = builder(
+    DEFAULTS,
+    lambda dims, s: GNN(
+        dims.n_legs, schema.body_graph(dims.n_legs, dims.variant).edges(), asdict(s)
+    ),
+)

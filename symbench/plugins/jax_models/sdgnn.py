@@ -6,11 +6,13 @@ edge outputs: the network is equivariant to the robot's rotation group.
 
 from __future__ import annotations
 
+from dataclasses import asdict
+
 import flax.linen as nn
 import jax.numpy as jnp
 
-from symbench import ModelDims
 from symbench.plugins.architectures import SDGNN as DEFAULTS
+from symbench.plugins.architectures import builder
 from symbench.plugins.graphs import star_graph
 from symbench.plugins.jax_models.layers import GraphNetwork
 
@@ -29,14 +31,4 @@ class SDGNN(nn.Module):
         )
 
 
-def build(
-    dims: ModelDims,
-    edge: int = DEFAULTS.edge,
-    node: int = DEFAULTS.node,
-    glob: int = DEFAULTS.glob,
-    mlp_layers: int = DEFAULTS.mlp_layers,
-    steps: int = DEFAULTS.steps,
-) -> SDGNN:
-    return SDGNN(
-        dims.n_legs, dict(edge=edge, node=node, glob=glob, mlp_layers=mlp_layers, steps=steps)
-    )
+build = builder(DEFAULTS, lambda dims, s: SDGNN(dims.n_legs, asdict(s)))

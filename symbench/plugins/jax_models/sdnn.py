@@ -9,8 +9,8 @@ from __future__ import annotations
 import flax.linen as nn
 import jax.numpy as jnp
 
-from symbench import ModelDims
 from symbench.plugins.architectures import SDNN as DEFAULTS
+from symbench.plugins.architectures import builder
 from symbench.plugins.jax_models.layers import LatentMLP
 
 
@@ -31,10 +31,4 @@ class SDNN(nn.Module):
         return nn.Dense(3, name="out")(h)
 
 
-def build(
-    dims: ModelDims,
-    latent: int = DEFAULTS.latent,
-    mlp_layers: int = DEFAULTS.mlp_layers,
-    steps: int = DEFAULTS.steps,
-) -> SDNN:
-    return SDNN(latent, mlp_layers, steps)
+build = builder(DEFAULTS, lambda dims, s: SDNN(s.latent, s.mlp_layers, s.steps))

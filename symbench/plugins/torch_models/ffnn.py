@@ -7,8 +7,8 @@ import math
 import torch
 from torch import nn
 
-from symbench import ModelDims
 from symbench.plugins.architectures import FFNN as DEFAULTS
+from symbench.plugins.architectures import builder
 from symbench.plugins.torch_models.layers import LatentMLP
 
 
@@ -23,5 +23,6 @@ class FFNN(nn.Module):
         return self.out(self.body(x.flatten(1))).reshape(-1, self.n_legs, 3)
 
 
-def build(dims: ModelDims, width: int = DEFAULTS.width, layers: int = DEFAULTS.layers) -> FFNN:
-    return FFNN(math.prod(dims.shape("x")), dims.n_legs, width, layers)
+build = builder(
+    DEFAULTS, lambda dims, s: FFNN(math.prod(dims.shape("x")), dims.n_legs, s.width, s.layers)
+)

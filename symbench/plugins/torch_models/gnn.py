@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
+from dataclasses import asdict
+
 import torch
 from torch import nn
 
 from symbench import ModelDims, schema
 from symbench.plugins.architectures import GNN as DEFAULTS
+from symbench.plugins.architectures import builder
 from symbench.plugins.torch_models.layers import GraphNetwork
 
 
@@ -24,12 +27,4 @@ class GNN(nn.Module):
         return self.graph(nodes, edges, globals).reshape(-1, self.n_legs, 3)
 
 
-def build(
-    dims: ModelDims,
-    edge: int = DEFAULTS.edge,
-    node: int = DEFAULTS.node,
-    glob: int = DEFAULTS.glob,
-    mlp_layers: int = DEFAULTS.mlp_layers,
-    steps: int = DEFAULTS.steps,
-) -> GNN:
-    return GNN(dims, edge=edge, node=node, glob=glob, mlp_layers=mlp_layers, steps=steps)
+build = builder(DEFAULTS, lambda dims, s: GNN(dims, **asdict(s)))

@@ -9,8 +9,8 @@ from __future__ import annotations
 import torch
 from torch import nn
 
-from symbench import ModelDims
 from symbench.plugins.architectures import SDNN as DEFAULTS
+from symbench.plugins.architectures import builder
 from symbench.plugins.torch_models.layers import LatentMLP
 
 
@@ -32,10 +32,6 @@ class SDNN(nn.Module):
         return self.out(self.dec(h))
 
 
-def build(
-    dims: ModelDims,
-    latent: int = DEFAULTS.latent,
-    mlp_layers: int = DEFAULTS.mlp_layers,
-    steps: int = DEFAULTS.steps,
-) -> SDNN:
-    return SDNN(dims.shape("x")[-1], latent, mlp_layers, steps)
+build = builder(
+    DEFAULTS, lambda dims, s: SDNN(dims.shape("x")[-1], s.latent, s.mlp_layers, s.steps)
+)
