@@ -87,13 +87,16 @@ def assert_refused(site: Path, paths: list[Path], message: str, presets=SMOKE) -
 def test_three_seeds_on_the_standard_dataset_are_published(site, valid):
     board = site / "leaderboards"
     assert sorted(p.name for p in (board / "records").iterdir()) == [
-        f"hexa__iid__sdnn__acc__torch__seed{s}.json" for s in range(3)
+        f"{HEXA}__smoke__iid__sdnn__acc__torch__seed{s}.json" for s in range(3)
     ]
     assert "| 1 | sdnn | acc | torch | 3 |" in (board / "hexa.md").read_text()
     before = snapshot(site)
     written = publish(valid, board, presets=SMOKE)
-    assert board / "records" / "hexa__unseen-heading__sdnn__acc__torch__seed2.json" in written
-    assert "## unseen-heading" in (board / "hexa.md").read_text()
+    assert (
+        board / "records" / f"{HEXA}__smoke__unseen-heading__sdnn__acc__torch__seed2.json"
+        in written
+    )
+    assert "### unseen-heading" in (board / "hexa.md").read_text()
     assert set(before) < set(snapshot(site))  # added to, nothing beside the board
     again = snapshot(site)
     publish(valid[:1], board, presets=SMOKE)  # publishing the same record again changes nothing
@@ -230,8 +233,8 @@ def test_refuses_too_few_seeds_and_a_changed_published_record(site, valid, seale
         site,
         valid + two,
         (
-            f"{two[0]}: hexa / unseen-rotation / sdnn / acc / torch would have 2 seed(s); publish "
-            "at least 3 seeds of a run together"
+            f"{two[0]}: {HEXA} / unseen-rotation / sdnn / acc / torch would have 2 seed(s); "
+            "publish at least 3 seeds of a run together"
         ),
     )
     changed = sealed("changed", seed=0, rmse=0.3)
@@ -239,14 +242,16 @@ def test_refuses_too_few_seeds_and_a_changed_published_record(site, valid, seale
         site,
         valid + [changed],
         (
-            f"{changed}: a different record for hexa__iid__sdnn__acc__torch__seed0 is already "
-            "published; remove it from the board's records first"
+            f"{changed}: a different record for {HEXA}__smoke__iid__sdnn__acc__torch__seed0 is "
+            "already published; remove it from the board's records first"
         ),
     )
 
 
 def test_refuses_a_board_holding_an_edited_record(site, valid):
-    published = site / "leaderboards" / "records" / "hexa__iid__sdnn__acc__torch__seed1.json"
+    published = (
+        site / "leaderboards" / "records" / f"{HEXA}__smoke__iid__sdnn__acc__torch__seed1.json"
+    )
     published.write_text(published.read_text().replace('"rmse": 0.1', '"rmse": 0.01'))
     assert_refused(
         site, valid, f"{published}: record does not match its seal (edited after it was written)"

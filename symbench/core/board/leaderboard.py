@@ -1,9 +1,12 @@
 """Aggregate result records into leaderboard tables (Markdown + CSV) and plots.
 
-Records are grouped by robot, split, model and backend; metrics are averaged over seeds with
-their standard deviation, and each (robot, split) table is ranked by test torque RMSE.
-Records from different dataset versions are never mixed: comparing numbers from two
-datasets would be meaningless, so the aggregation refuses and says why. Schema-1 (unsealed)
+Records are grouped by dataset, split, model, variant and backend (a dataset belongs to one
+robot; a standard dataset id names its robot and preset); metrics are averaged over seeds
+with their standard deviation, and each (dataset, split) table is ranked by test torque RMSE.
+Each robot's page has a section per dataset, so a robot's standard data and its imported
+logs sit side by side, never mixed. Records of one dataset id made on different contents
+(another version of the data) or with different presets (budgets) are never mixed either:
+their numbers would not be comparable, so the aggregation refuses and says why. Schema-1 (unsealed)
 records are still shown, so that old boards can be read; publishing refuses them. Output file
 names come from record fields that the schema restricts to safe identifiers.
 """
@@ -47,16 +50,25 @@ def load_records(folder: Path) -> list[tuple[Path, RecordV1]]:
 
 
 def check_consistent(records: Iterable[tuple[Path, RecordV1]]) -> None:
-    """One dataset content hash per robot, or an error."""
+    """One content hash and one preset per dataset id, or an error."""
     hashes: dict[str, dict[str, Path]] = defaultdict(dict)
+    presets: dict[str, dict[str, Path]] = defaultdict(dict)
     for path, r in records:
-        hashes[r.robot].setdefault(r.dataset.content_hash, path)
-    for robot, by_hash in hashes.items():
+        hashes[r.dataset.id].setdefault(r.dataset.content_hash, path)
+        presets[r.dataset.id].setdefault(r.dataset.preset, path)
+    for did, by_hash in hashes.items():
         if len(by_hash) > 1:
             examples = ", ".join(f"{p.name} ({h[:12]}...)" for h, p in by_hash.items())
             raise SymbenchError(
-                f"records for {robot} come from {len(by_hash)} different datasets "
+                f"records of dataset {did} come from {len(by_hash)} different datasets "
                 f"({examples}); aggregate records of one dataset version only"
+            )
+    for did, by_preset in presets.items():
+        if len(by_preset) > 1:
+            examples = ", ".join(f"{p.name} ({name})" for name, p in by_preset.items())
+            raise SymbenchError(
+                f"records of dataset {did} were made with {len(by_preset)} presets "
+                f"({examples}); aggregate records of one preset per dataset only"
             )
 
 
@@ -69,6 +81,7 @@ def _flat(record: RecordV1) -> dict:
         "backend": record.model.backend,
         "seed": record.seed,
         "dataset": record.dataset.id,
+        "preset": record.dataset.preset,
         "parameters": record.model.parameters,
         "epochs": float(record.training.epochs),
     }
@@ -79,18 +92,19 @@ def _flat(record: RecordV1) -> dict:
 
 
 def aggregate(records: list[tuple[Path, RecordV1]]) -> pd.DataFrame:
-    """Mean and standard deviation over seeds per (robot, split, model, variant, backend),
-    ranked."""
+    """Mean and standard deviation over seeds per (dataset, split, model, variant, backend),
+    ranked within each dataset and split; the dataset's robot and preset are columns too."""
     check_consistent(records)
     runs = pd.DataFrame([_flat(r) for _, r in records])
-    duplicate = runs.duplicated(["robot", "split", "model", "variant", "backend", "seed"])
+    duplicate = runs.duplicated(["dataset", "split", "model", "variant", "backend", "seed"])
     if duplicate.any():
         first = runs[duplicate].iloc[0]
         raise SymbenchError(
-            f"two records for the same run: {first['robot']} {first['split']} "
-            f"{first['model']} {first['backend']} seed {first['seed']}"
+            f"two records for the same run: {first['dataset']} {first['split']} "
+            f"{first['model']} {first['variant']} {first['backend']} seed {first['seed']}"
         )
-    keys = ["robot", "split", "model", "variant", "backend"]
+    # robot and preset follow from the dataset (one content, one preset per id)
+    keys = ["robot", "dataset", "preset", "split", "model", "variant", "backend"]
     missing = runs.rmse_Nm.isna()
     if missing.any():
         names = ", ".join(sorted(str(p.name) for (p, _), m in zip(records, missing) if m)[:5])
@@ -101,17 +115,16 @@ def aggregate(records: list[tuple[Path, RecordV1]]) -> pd.DataFrame:
     # epochs show when the stopping rule ended a training early (an under-trained model)
     metrics = [c for c in COLUMNS.values() if runs[c].notna().any()] + ["epochs"]
     grouped = runs.groupby(keys, sort=True)
-    table = grouped.agg(
-        seeds=("seed", "nunique"), parameters=("parameters", "first"), dataset=("dataset", "first")
-    )
+    table = grouped.agg(seeds=("seed", "nunique"), parameters=("parameters", "first"))
     for m in metrics:
         table[f"{m}_mean"] = grouped[m].mean()
         table[f"{m}_std"] = grouped[m].std(ddof=1)
     table = table.reset_index()
-    table["rank"] = table.groupby(["robot", "split"])["rmse_Nm_mean"].rank(method="min").astype(int)
-    return table.sort_values(["robot", "split", "rank", "model", "variant", "backend"]).reset_index(
-        drop=True
+    table["rank"] = (
+        table.groupby(["dataset", "split"])["rmse_Nm_mean"].rank(method="min").astype(int)
     )
+    order = ["robot", "dataset", "split", "rank", "model", "variant", "backend"]
+    return table.sort_values(order).reset_index(drop=True)
 
 
 def _cell(mean: float, std: float) -> str:
@@ -121,12 +134,23 @@ def _cell(mean: float, std: float) -> str:
 
 
 def markdown(table: pd.DataFrame, robot: str) -> str:
-    """One robot's leaderboard: a section per split, rows ranked by RMSE."""
+    """One robot's leaderboard: a section per dataset, in it one per split, rows ranked by
+    RMSE."""
     metrics = [c[: -len("_mean")] for c in table.columns if c.endswith("_mean")]
     lines = [f"# {robot}", ""]
-    for split, part in table[table.robot == robot].groupby("split", sort=True):
+    for (did, preset), data in table[table.robot == robot].groupby(
+        ["dataset", "preset"], sort=True
+    ):
+        lines += [f"## Dataset {did}, preset {preset}", ""]
+        lines += _split_tables(data, metrics)
+    return "\n".join(lines)
+
+
+def _split_tables(table: pd.DataFrame, metrics: list[str]) -> list[str]:
+    lines: list[str] = []
+    for split, part in table.groupby("split", sort=True):
         lines += [
-            f"## {split}",
+            f"### {split}",
             "",
             "| rank | model | variant | backend | seeds | " + " | ".join(metrics) + " |",
             "|---|---|---|---|---|" + "---|" * len(metrics),
@@ -139,22 +163,27 @@ def markdown(table: pd.DataFrame, robot: str) -> str:
                 f"| {row.seeds}{flag} | " + " | ".join(cells) + " |"
             )
         lines.append("")
-    return "\n".join(lines)
+    return lines
 
 
 def sample_efficiency_plot(table: pd.DataFrame, robot: str, path: Path) -> bool:
-    """Test RMSE against training fraction, one line per model; False when no fractions.
-    `iid` is the same split with all of its training trajectories, so it is the point at 1."""
+    """Test RMSE against training fraction, one line per model (and dataset, when the robot
+    has records of several); False when no fractions. `iid` is the same split with all of its
+    training trajectories, so it is the point at 1."""
     rows = table[table.robot == robot].copy()
     fractions = rows.split.str.startswith("fraction-")
     if not fractions.any():
         return False
     rows = rows[fractions | (rows.split == "iid")]
     rows["fraction"] = rows.split.str.removeprefix("fraction-").replace("iid", "1").astype(float)
+    several = rows.dataset.nunique() > 1
     curves = {}
-    for (model, variant, backend), part in rows.groupby(["model", "variant", "backend"], sort=True):
+    for (did, model, variant, backend), part in rows.groupby(
+        ["dataset", "model", "variant", "backend"], sort=True
+    ):
         part = part.sort_values("fraction")
-        curves[f"{model} ({variant}, {backend})"] = (
+        on = f", {did}" if several else ""
+        curves[f"{model} ({variant}, {backend}{on})"] = (
             part.fraction.tolist(),
             part.rmse_Nm_mean.tolist(),
             part.rmse_Nm_std.fillna(0).tolist(),

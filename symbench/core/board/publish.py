@@ -2,10 +2,11 @@
 
 Every record that would be on the board afterwards, incoming and already published, must
 pass `RecordChecks` (sealed, committed tree, accepted preset, registered names, the standard
-dataset's hash); each run group (robot, split, model, variant, backend) needs MIN_SEEDS seeds;
-`verify` re-runs a seeded sample of the incoming records first. Only then is the new board
-built in a staging folder beside it (records and tables) and swapped in by two renames, so a
-refusal, or a failure half-way, leaves the board exactly as it was.
+dataset's hash); each run group (dataset, split, model, variant, backend) needs MIN_SEEDS
+seeds; `verify` re-runs a seeded sample of the incoming records first. Only then is the new
+board built in a staging folder beside it (records, named by their key `run_key`, and
+tables) and swapped in by two renames, so a refusal, or a failure half-way, leaves the
+board exactly as it was.
 
 The CLI accepts the `small` and `paper` presets only. The Python API takes the accepted
 presets as a parameter so that tests can publish records of the seconds-long `smoke` preset;
@@ -31,7 +32,7 @@ PUBLISHED_PRESETS = ("small", "paper")
 
 
 def _group(r: ResultRecord) -> tuple[str, ...]:
-    return (r.robot, r.split, r.model.name, r.model.variant, r.model.backend)
+    return (r.dataset.id, r.split, r.model.name, r.model.variant, r.model.backend)
 
 
 def check_merge(

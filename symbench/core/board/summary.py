@@ -1,8 +1,9 @@
-"""The leaderboard's headline page: every model side by side, one row per robot and split.
+"""The leaderboard's headline page: every model side by side, one row per dataset and split.
 
-The per-robot pages rank models within one split; the claims a reader checks (does a model
-generalize to unseen rotations, does it degrade as legs increase, does it keep the robot on
-the wall) need the models in columns across splits and robots, so this page puts them there.
+The per-robot pages rank models within one dataset and split; the claims a reader checks
+(does a model generalize to unseen rotations, does it degrade as legs increase, does it keep
+the robot on the wall) need the models in columns across splits and datasets (a standard
+dataset id names its robot, e.g. hexa-climb-small-v4), so this page puts them there.
 """
 
 from __future__ import annotations
@@ -38,30 +39,30 @@ def _cell(mean: float, std: float, digits: int = 3) -> str:
 
 
 def _column_order(table: pd.DataFrame) -> list[str]:
-    """Models by their mean rank over all (robot, split) groups, then by name."""
+    """Models by their mean rank over all (dataset, split) groups, then by name."""
     mean_rank = table.groupby("label")["rank"].mean()
     return sorted(mean_rank.index, key=lambda label: (mean_rank[label], label))
 
 
 def error_section(table: pd.DataFrame, metric: str, title: str) -> list[str]:
-    """One error metric per robot and split, models in columns."""
+    """One error metric per dataset and split, models in columns."""
     columns = _column_order(table)
     lines = [
         f"## {title}",
         "",
-        "| robot | split | " + " | ".join(columns) + " |",
+        "| dataset | split | " + " | ".join(columns) + " |",
         "|---|---|" + "---|" * len(columns),
     ]
-    groups = table.groupby(["robot", "split"], sort=False)
-    for robot, split in sorted(groups.groups, key=lambda k: (k[0], _split_key(k[1]))):
-        part = groups.get_group((robot, split)).set_index("label")
+    groups = table.groupby(["dataset", "split"], sort=False)
+    for did, split in sorted(groups.groups, key=lambda k: (k[0], _split_key(k[1]))):
+        part = groups.get_group((did, split)).set_index("label")
         cells = [
             _cell(part.at[c, f"{metric}_mean"], part.at[c, f"{metric}_std"])
             if c in part.index
             else "-"
             for c in columns
         ]
-        lines.append(f"| {robot} | {split} | " + " | ".join(cells) + " |")
+        lines.append(f"| {did} | {split} | " + " | ".join(cells) + " |")
     return lines + [""]
 
 
@@ -74,10 +75,10 @@ def closed_loop_section(table: pd.DataFrame) -> list[str]:
     lines = [
         "## Closed loop: time to failure (s), model alone / with small PD, mean over seeds",
         "",
-        "| robot | split | " + " | ".join(columns) + " |",
+        "| dataset | split | " + " | ".join(columns) + " |",
         "|---|---|" + "---|" * len(columns),
     ]
-    for (robot, split), part in rows.groupby(["robot", "split"], sort=True):
+    for (did, split), part in rows.groupby(["dataset", "split"], sort=True):
         part = part.set_index("label")
         cells = [
             f"{part.at[c, 'cl_ttf_s_mean']:.3g} / {part.at[c, 'cl_pd_ttf_s_mean']:.3g}"
@@ -85,7 +86,7 @@ def closed_loop_section(table: pd.DataFrame) -> list[str]:
             else "-"
             for c in columns
         ]
-        lines.append(f"| {robot} | {split} | " + " | ".join(cells) + " |")
+        lines.append(f"| {did} | {split} | " + " | ".join(cells) + " |")
     return lines + [""]
 
 
@@ -96,7 +97,7 @@ def headline(table: pd.DataFrame) -> str:
     lines = [
         "# Leaderboard summary",
         "",
-        f"Seeds per run group: {', '.join(map(str, seeds))}. Rank within each robot and "
+        f"Seeds per run group: {', '.join(map(str, seeds))}. Rank within each dataset and "
         "split is by mean test RMSE; the per-robot pages have every metric.",
         "",
     ]

@@ -7,7 +7,13 @@ sealed: `seal` is the SHA-256 of its canonical JSON without the seal, so a value
 hand is detected whenever the record is read. The seal is not a signature (anyone can re-seal
 an edited record); `symbench verify` re-runs a record to check its numbers.
 
-Names that end up in file names (robot, split, model, variant, dataset) must be safe
+A run's identity is its configuration: the data (dataset id and content hash), the preset
+(budgets), split, seed, model, input variant, backend, evaluators and training configuration.
+The key (`run_key`), which names the record file, holds what tells runs apart at a glance
+(dataset id, preset, split, model, variant, backend, seed); `RecordBody.configuration` holds
+all of it, so a sweep can tell a finished run from another run's record at the same path.
+
+Names that end up in file names (robot, split, model, variant, dataset, preset) must be safe
 identifiers, so no record can make publish or leaderboard write outside their folder.
 Schema-1 records (unsealed, without provenance) are read for display only
 (`read_display_record`); everything that trusts a record uses `read_record`.
@@ -34,6 +40,16 @@ LEGACY_SCHEMA_VERSION = 1  # unsealed, no provenance: shown by `symbench leaderb
 IDENTIFIER = r"^[A-Za-z0-9][A-Za-z0-9._-]*$"
 Identifier = Annotated[str, StringConstraints(pattern=IDENTIFIER, max_length=100)]
 Sha256 = Annotated[str, StringConstraints(pattern=r"^[0-9a-f]{64}$")]
+
+
+def run_key(
+    dataset: str, preset: str, split: str, model: str, variant: str, backend: str, seed: int
+) -> str:
+    """What identifies a run by name: one record per key, written as `<key>.json`, e.g.
+    `hexa-climb-small-v4__small__iid__sdnn__acc__torch__seed0`. The dataset id names the data
+    (a standard id names its robot and grid), the preset the budgets; both are in the key, so
+    runs on other data or other budgets never share a record file or a checkpoint folder."""
+    return f"{dataset}__{preset}__{split}__{model}__{variant}__{backend}__seed{seed}"
 
 
 class _Strict(BaseModel):
@@ -130,9 +146,9 @@ class RecordV1(_Strict):
     git_commit: str
 
     def key(self) -> str:
-        """What identifies a run in a sweep: one record per key (safe as a file name)."""
-        m = self.model
-        return f"{self.robot}__{self.split}__{m.name}__{m.variant}__{m.backend}__seed{self.seed}"
+        """The run's key (`run_key`), safe as a file name: one record per key."""
+        m, d = self.model, self.dataset
+        return run_key(d.id, d.preset, self.split, m.name, m.variant, m.backend, self.seed)
 
 
 class RecordBody(RecordV1):
@@ -141,6 +157,26 @@ class RecordBody(RecordV1):
     schema_version: Literal[2] = RECORD_SCHEMA_VERSION  # type: ignore[assignment]  # narrows v1
     model: ModelInfo
     training: TrainingInfo
+
+    def configuration(self) -> dict[str, Any]:
+        """Everything the run was asked to do, as JSON values by a readable name: two records
+        of one configuration differ only in what the run measured and where it ran. Compared
+        with `runner.configuration` of a requested run (same names)."""
+        m, config = self.model, self.training.config.model_dump(mode="json")
+        return {
+            "dataset": self.dataset.id,
+            "dataset content hash": self.dataset.content_hash,
+            "preset": self.dataset.preset,
+            "robot": self.robot,
+            "split": self.split,
+            "seed": self.seed,
+            "model": m.name,
+            "backend": m.backend,
+            "input variant": m.variant,
+            "evaluators": sorted(self.metrics),
+            "hyper-parameters": json.loads(json.dumps(m.hyperparameters)),
+            **{f"training {name}": value for name, value in config.items()},
+        }
 
 
 class ResultRecord(RecordBody):

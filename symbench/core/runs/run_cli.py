@@ -1,4 +1,9 @@
-"""`symbench run`: train and evaluate one model on one robot, print a table, write a record."""
+"""`symbench run`: train and evaluate one model on one dataset, print a table, write a record.
+
+`--dataset` names the data (any cached id, generated or imported; default: the standard
+dataset of `--robot` and the preset), `--preset` the budgets (default: a standard dataset's
+own preset, else `small`); the robot is the dataset's, so `--robot` may be left out with
+`--dataset` and must agree with it when given."""
 
 from __future__ import annotations
 
@@ -16,6 +21,9 @@ from symbench.core.runs.runner import (
     DEFAULT_EVALUATORS,
     FIRST_RESULT_EVALUATORS,
     RunSpec,
+    check_names,
+    default_preset,
+    resolve_robot,
     train_config,
 )
 from symbench.core.runs.runner import run as run_spec
@@ -23,15 +31,28 @@ from symbench.core.runs.runner import run as run_spec
 
 @click.command("run")
 @click.option("--model", "model_name", required=True, help="Registered model, e.g. sdnn.")
-@click.option("--robot", "robot_name", required=True, help="Registered robot, e.g. hexa.")
+@click.option(
+    "--robot",
+    "robot_name",
+    default=None,
+    help="Registered robot, e.g. hexa: trains on its standard dataset of the preset "
+    "(with --dataset: the dataset's robot, may be left out).",
+)
+@click.option(
+    "--dataset",
+    "dataset",
+    default=None,
+    help="A cached dataset id, generated or imported (see `symbench list datasets`); "
+    "default: the robot's standard dataset of the preset.",
+)
 @click.option("--backend", default="torch", show_default=True, help="torch or jax.")
 @click.option("--split", default="iid", show_default=True, help="A registered split.")
 @click.option("--seed", default=0, show_default=True, type=SEED)
 @click.option(
     "--preset",
-    default="small",
-    show_default=True,
-    help=f"{', '.join(PRESETS)}: sizes, budgets, horizons (see `symbench presets`).",
+    default=None,
+    help=f"{', '.join(PRESETS)}: epoch cap, evaluation budgets, horizons (see `symbench "
+    "presets`); default: a standard dataset's own preset, else small.",
 )
 @click.option(
     "--variant",
@@ -67,26 +88,41 @@ from symbench.core.runs.runner import run as run_spec
     help="Worker processes at once, simulating the dataset when it is missing.",
 )
 @click.option("--max-epochs", type=EPOCHS, default=None, help="Override the preset's epoch cap.")
+@click.option(
+    "--overwrite",
+    is_flag=True,
+    help="Replace a record of another configuration at the record's path (refused otherwise).",
+)
 def run(
     model_name: str,
-    robot_name: str,
+    robot_name: str | None,
+    dataset: str | None,
     backend: str,
     split: str,
     seed: int,
-    preset: str,
+    preset: str | None,
     variant: str | None,
     evaluators: list[str] | None,
     full: bool,
     output: Path,
     workers: int,
     max_epochs: int | None,
+    overwrite: bool,
 ) -> None:
-    """Train and evaluate MODEL on ROBOT (generating the dataset when missing).
+    """Train and evaluate MODEL on a robot's standard dataset (generated when missing) or on
+    any cached dataset (--dataset).
 
     Each stage is announced with the time so far; the simulation and training bars estimate
     what remains."""
     if evaluators is not None and full:
         raise click.UsageError("--full and --evaluators choose the evaluators twice; use one")
+    if robot_name is None and dataset is None:
+        raise click.UsageError("give --robot (its standard dataset) or --dataset")
+    if preset is None:
+        preset = default_preset(dataset)
+    if dataset is not None:
+        robot_name = resolve_robot(robot_name, dataset)
+    assert robot_name is not None
     if evaluators is None:
         evaluators = list(DEFAULT_EVALUATORS if full else FIRST_RESULT_EVALUATORS)
     console = Console()
@@ -102,26 +138,30 @@ def run(
         output=output,
         workers=workers,
         max_epochs=max_epochs,
+        dataset=dataset,
+        overwrite=overwrite,
     )
+    check_names(spec)  # every name, before the plan is printed
     started = time.perf_counter()
 
     def announce(stage: str) -> None:
         console.print(f"[bold]{stage}[/] [dim]({time.perf_counter() - started:.0f} s so far)[/]")
 
     console.print(
-        f"{model_name} on {robot_name}: dataset, one training (at most "
+        f"{model_name} on {spec.dataset_id} ({robot_name}, preset {preset}): dataset, one "
+        "training (at most "
         f"{train_config(spec).max_epochs} epochs), then {', '.join(evaluators)}"
     )
     record = run_spec(spec, on_stage=announce)
     console.print(metrics_table(record))
-    console.print(f"result record: {spec.record_path}")
+    console.print(f"result record: {spec.record_path}", soft_wrap=True)  # whole, to copy
 
 
 def metrics_table(record: ResultRecord) -> Table:
     """The record's scalar metrics, one row each."""
     m = record.model
     table = Table(
-        title=f"{m.name} ({m.backend}) on {record.robot}, split {record.split}, "
+        title=f"{m.name} ({m.backend}) on {record.dataset.id}, split {record.split}, "
         f"seed {record.seed}, {record.samples.train} training samples"
     )
     table.add_column("evaluator")

@@ -2,20 +2,28 @@
 
 Every model of a comparison goes through this same path, so they see the same samples, the
 same protocol and the same evaluators; the record says exactly what was done.
+
+The data and the budgets are chosen apart: the dataset (`RunSpec.dataset`, any cached id,
+generated or imported; by default the standard dataset of the robot and preset) names the
+trajectories, the preset the epoch cap and the evaluators' budgets. The record's file name is
+the run's key (`results.run_key`), which holds both, and a record already there of another
+configuration is never replaced unless the run says so (`overwrite`).
 """
 
 from __future__ import annotations
 
+import json
+import re
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from datetime import UTC, datetime
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Literal
 
 from symbench.core.common.errors import SymbenchError, UnknownNameError
 from symbench.core.common.paths import writable_folder
-from symbench.core.data.presets import preset
+from symbench.core.data.presets import dataset_id, parse_dataset_id, preset
 from symbench.core.data.provenance import (
     build_hyperparameters,
     checkpoint_file_hashes,
@@ -29,12 +37,15 @@ from symbench.core.plugin import registry
 from symbench.core.plugin.entries import ModelEntry
 from symbench.core.runs.evaluation import EvaluationContext, TrainedOnSplit, run_evaluators
 from symbench.core.runs.results import (
+    IDENTIFIER,
     DatasetInfo,
     ModelInfo,
     RecordBody,
     ResultRecord,
     SampleCounts,
     TrainingInfo,
+    read_record,
+    run_key,
     write_record,
 )
 
@@ -50,7 +61,7 @@ FIRST_RESULT_EVALUATORS = ("torque-error", "equivariance", "invariance")
 @dataclass(frozen=True)
 class RunSpec:
     model: str
-    robot: str
+    robot: str  # must be the dataset's robot
     backend: str = "torch"
     split: str = "iid"
     seed: int = 0
@@ -64,12 +75,19 @@ class RunSpec:
     # TrainConfig fields replacing the protocol's defaults (`symbench verify` replays a
     # record's); seed, max_epochs and progress always come from the fields above
     train_config: dict[str, Any] = field(default_factory=dict)
+    dataset: str | None = None  # a cached dataset id; None: the robot's standard one (preset's)
+    overwrite: bool = False  # replace a record of another configuration at `record_path`
+
+    @property
+    def dataset_id(self) -> str:
+        """The data the run trains on: `dataset`, else the standard dataset of the preset."""
+        return self.dataset if self.dataset is not None else dataset_id(self.robot, self.preset)
 
     def key(self) -> str:
         """Matches `ResultRecord.key()`: the variant is resolved from the registry."""
         variant = model_entry(self).variant
-        return (
-            f"{self.robot}__{self.split}__{self.model}__{variant}__{self.backend}__seed{self.seed}"
+        return run_key(
+            self.dataset_id, self.preset, self.split, self.model, variant, self.backend, self.seed
         )
 
     @property
@@ -101,7 +119,8 @@ def model_entry(spec: RunSpec):
 
 def check_names(spec: RunSpec) -> None:
     """Every name resolves and every number is valid before any minute is spent (closest
-    names otherwise)."""
+    names otherwise); the dataset exists (or is a standard one, made when missing) and holds
+    the run's robot."""
     model_entry(spec)
     registry.robot(spec.robot)
     registry.split(spec.split)
@@ -111,6 +130,48 @@ def check_names(spec: RunSpec) -> None:
     if spec.workers < 1:
         raise SymbenchError(f"workers must be at least 1, got {spec.workers}")
     train_config(spec)
+    resolve_robot(spec.robot, spec.dataset_id)
+
+
+def is_standard(did: str) -> bool:
+    """Whether `did` is the id this code generates for a robot and preset (made when missing)."""
+    parsed = parse_dataset_id(did)
+    return parsed is not None and dataset_id(*parsed) == did
+
+
+def default_preset(did: str | None) -> str:
+    """The preset of a run that names none: a standard dataset's own, else `small`."""
+    parsed = parse_dataset_id(did) if did is not None else None
+    return parsed[1] if parsed is not None else "small"
+
+
+def dataset_robot(did: str) -> str:
+    """The robot whose trajectories dataset `did` holds: its metadata's when it is cached, a
+    standard id's robot otherwise; an error for any other id missing from the cache."""
+    from symbench.core.data.dataset import missing_hint
+    from symbench.core.data.metadata import METADATA, dataset_dir, read_metadata
+
+    if not re.match(IDENTIFIER, did) or len(did) > 100:
+        raise SymbenchError(
+            f"dataset id '{did}' cannot name a result record (at most 100 letters, digits, "
+            "'.', '_' and '-', not starting with '.')"
+        )
+    if (dataset_dir(did) / METADATA).is_file():
+        return str(read_metadata(did, missing_hint(did))[1]["robot"])
+    if is_standard(did):
+        return str(parse_dataset_id(did)[0])  # type: ignore[index]  # standard: parsed
+    raise SymbenchError(f"dataset '{did}' is not in the cache; {missing_hint(did)}")
+
+
+def resolve_robot(robot: str | None, did: str) -> str:
+    """The robot of a run on dataset `did`: the dataset's; `robot`, when given, must be it."""
+    holds = dataset_robot(did)
+    if robot is not None and robot != holds:
+        raise SymbenchError(
+            f"dataset '{did}' holds trajectories of {holds}, not {robot}; "
+            "leave --robot out or give the dataset's robot"
+        )
+    return holds
 
 
 def train_config(spec: RunSpec) -> TrainConfig:
@@ -130,10 +191,22 @@ def train_config(spec: RunSpec) -> TrainConfig:
 
 
 def ensure_dataset(spec: RunSpec):
-    """The preset's dataset for the robot, generated first when it is not in the cache."""
+    """The run's dataset: a standard one is generated first when it is not in the cache (or
+    its robot spec changed); any other (imported) must be in the cache."""
+    from symbench.core.data.dataset import load_dataset
     from symbench.core.data.generation import ensure_dataset as ensure
 
-    return ensure(spec.robot, spec.preset, spec.workers, show_progress=spec.progress)
+    did = spec.dataset_id
+    if is_standard(did):
+        robot, grid = parse_dataset_id(did)  # type: ignore[misc]  # standard: parsed
+        dataset = ensure(robot, grid, spec.workers, show_progress=spec.progress)
+    else:
+        dataset = load_dataset(did)
+    if dataset.robot != spec.robot:
+        raise SymbenchError(
+            f"dataset '{did}' holds trajectories of {dataset.robot}, not {spec.robot}"
+        )
+    return dataset
 
 
 def recorded_config(config: TrainConfig, entry: ModelEntry) -> dict[str, Any]:
@@ -148,6 +221,84 @@ def recorded_config(config: TrainConfig, entry: ModelEntry) -> dict[str, Any]:
     return out
 
 
+def configuration(spec: RunSpec, content_hash: str | None = None) -> dict[str, Any]:
+    """What the run would record as its configuration (`RecordBody.configuration`); the
+    dataset content hash only when given (it is known once the dataset is made)."""
+    entry = model_entry(spec)
+    config = train_config(spec)
+    wanted = {
+        "dataset": spec.dataset_id,
+        "dataset content hash": content_hash,
+        "preset": spec.preset,
+        "robot": spec.robot,
+        "split": spec.split,
+        "seed": spec.seed,
+        "model": entry.name,
+        "backend": entry.backend,
+        "input variant": entry.variant,
+        "evaluators": sorted(spec.evaluators),
+        "hyper-parameters": build_hyperparameters(entry, config.hyper),
+        **{f"training {k}": v for k, v in recorded_config(config, entry).items()},
+    }
+    if content_hash is None:
+        del wanted["dataset content hash"]
+    return json.loads(json.dumps(wanted))  # as a record holds them: tuples become lists
+
+
+def _shown(name: str, value: Any) -> str:
+    if name == "dataset content hash" and isinstance(value, str):
+        return f"{value[:12]}..."
+    if name == "evaluators" and isinstance(value, list):
+        return ",".join(map(str, value)) or "none"
+    return json.dumps(value) if not isinstance(value, str) else value
+
+
+def difference(found: dict[str, Any], wanted: dict[str, Any]) -> str | None:
+    """The first configuration entry in which a found record differs from a wanted run, as
+    "preset smoke in the record, small in this run"; None when they agree on every wanted
+    entry."""
+    for name, value in wanted.items():
+        if found.get(name) != value:
+            was = _shown(name, found.get(name))
+            return f"{name} {was} in the record, {_shown(name, value)} in this run"
+    return None
+
+
+RecordState = Literal["missing", "unreadable", "same", "different"]
+
+
+def record_state(spec: RunSpec, content_hash: str | None = None) -> tuple[RecordState, str]:
+    """What is at the run's record path: nothing, a record that cannot be trusted (corrupt,
+    edited, schema 1: rewritten), a record of this very configuration, or one of another
+    configuration; with the reason when untrusted or of another configuration."""
+    path = spec.record_path
+    if not path.is_file():
+        return "missing", ""
+    try:
+        record = read_record(path)
+    except SymbenchError as exc:
+        return "unreadable", str(exc)
+    why = difference(record.configuration(), configuration(spec, content_hash))
+    return ("same", "") if why is None else ("different", why)
+
+
+def refusal(spec: RunSpec, why: str, more: int = 0) -> SymbenchError:
+    """The error for a record of another configuration at the run's path (`more`: how many
+    other records of the command differ too)."""
+    others = f" (and {more} more record{'s' if more > 1 else ''})" if more else ""
+    it = "them" if more else "it"
+    return SymbenchError(
+        f"{spec.record_path} is a record of another configuration ({why}){others}; pass "
+        f"--overwrite to run {it} again and replace {it}, or choose another --output"
+    )
+
+
+def _check_replaceable(spec: RunSpec, content_hash: str | None = None) -> None:
+    state, why = record_state(spec, content_hash)
+    if state == "different" and not spec.overwrite:
+        raise refusal(spec, why)
+
+
 def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> ResultRecord:
     """Train and evaluate one model; writes and returns the validated record."""
     from symbench.core.training.loop import train
@@ -155,11 +306,13 @@ def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> 
 
     check_names(spec)
     writable_folder(spec.output, "output folder")
+    _check_replaceable(spec)  # before any minute is spent
     entry = model_entry(spec)
     config = train_config(spec)
     timer = Timer()
     on_stage("dataset")
     dataset = timer.measure("dataset_s", ensure_dataset, spec)
+    _check_replaceable(spec, dataset.content_hash)
     # per dataset version, so a regenerated dataset trains afresh instead of resuming
     checkpoints = spec.output / "checkpoints" / spec.key() / dataset.content_hash[:12]
 

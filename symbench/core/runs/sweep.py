@@ -1,11 +1,15 @@
 """Sweeps: a grid of runs that skips finished records, so an interrupted sweep resumes.
 
-A run is finished when its result record exists, validates and matches its seal (a
-schema-1 record is redone); records are written
-atomically, so a run killed half-way leaves none and is simply redone. Datasets are made
-once per robot before the runs start, so parallel runs never race to generate them. Local
-workers exit with the sweep, however it ends (`processes`); Ctrl-C reports how many runs
-have records, counted on disk.
+A run is finished when a record at its path (named by its key: dataset, preset, split, model,
+variant, backend, seed) validates, matches its seal and holds the requested configuration:
+the same dataset content, evaluators and training configuration too (`runner.record_state`).
+A record of another configuration there is never counted as finished: the sweep refuses
+before any run starts, naming the first difference, unless the runs say `overwrite`, and then
+they run again and replace those records. A record that cannot be trusted (corrupt, edited,
+schema 1) is redone; records are written atomically, so a run killed half-way leaves none and
+is simply redone. Datasets are made (or loaded) once each before the records are compared,
+so parallel runs never race to generate them. Local workers exit with the sweep, however it
+ends (`processes`); Ctrl-C reports how many runs have records, counted on disk.
 """
 
 from __future__ import annotations
@@ -17,8 +21,15 @@ from dataclasses import replace
 from symbench.core.common.errors import SymbenchError
 from symbench.core.common.processes import run_each
 from symbench.core.runs import ray_executor
-from symbench.core.runs.results import read_record
-from symbench.core.runs.runner import RunSpec, check_names, ensure_dataset, run
+from symbench.core.runs.runner import (
+    RunSpec,
+    check_names,
+    ensure_dataset,
+    record_state,
+    refusal,
+    resolve_robot,
+    run,
+)
 
 
 def plan(
@@ -28,26 +39,24 @@ def plan(
     seeds: Sequence[int],
     backends: Sequence[str],
     base: RunSpec,
+    datasets: Sequence[str] = (),
 ) -> list[RunSpec]:
-    """Every combination, in a fixed order; names are checked before anything runs."""
+    """Every combination, in a fixed order: the robots' standard datasets of `base.preset`,
+    then `datasets` (cached ids, each run on its own robot); names are checked before
+    anything runs."""
+    data = [(r, None) for r in robots] + [(resolve_robot(None, d), d) for d in datasets]
     specs = [
-        replace(base, model=m, robot=r, split=s, seed=seed, backend=b)
-        for r, s, m, b, seed in itertools.product(robots, splits, models, backends, seeds)
+        replace(base, model=m, robot=r, dataset=d, split=s, seed=seed, backend=b)
+        for (r, d), s, m, b, seed in itertools.product(data, splits, models, backends, seeds)
     ]
     for spec in specs:
         check_names(spec)
     return specs
 
 
-def finished(spec: RunSpec) -> bool:
-    """A valid record exists; a corrupt one counts as unfinished and will be rewritten."""
-    if not spec.record_path.is_file():
-        return False
-    try:
-        read_record(spec.record_path)
-    except SymbenchError:
-        return False
-    return True
+def finished(spec: RunSpec, content_hash: str | None = None) -> bool:
+    """A valid record of this configuration (on data of `content_hash`, when given) exists."""
+    return record_state(spec, content_hash)[0] == "same"
 
 
 def _run_quietly(spec: RunSpec) -> str:
@@ -62,18 +71,31 @@ def sweep(
     address: str | None = None,
     report: Callable[[str], None] = print,
 ) -> list[str]:
-    """Run the unfinished specs, at most `workers` at once locally; returns the keys that ran."""
+    """Run the unfinished specs, at most `workers` at once locally; returns the keys that ran.
+    Refuses, before anything runs, when a record of another configuration is at the path of a
+    spec that does not say `overwrite`."""
     if executor not in ("local", "ray"):
         raise SymbenchError(f"unknown executor '{executor}' (local, ray)")
     if workers < 1:
         raise SymbenchError(f"workers must be at least 1, got {workers}")
-    todo = [s for s in specs if not finished(s)]
+    hashes = {
+        s.dataset_id: ensure_dataset(s).content_hash
+        for s in {s.dataset_id: s for s in specs}.values()
+    }
+    states = [(s, *record_state(s, hashes[s.dataset_id])) for s in specs]
+    refused = [(s, why) for s, state, why in states if state == "different" and not s.overwrite]
+    if refused:
+        raise refusal(*refused[0], more=len(refused) - 1)
+    todo = [s for s, state, _ in states if state != "same"]
     report(
         f"{len(specs) - len(todo)} of {len(specs)} runs already have records; {len(todo)} to run"
     )
+    for s, state, why in states:
+        if state == "different":
+            report(f"replacing {s.record_path} (--overwrite): {why}")
+        elif state == "unreadable":
+            report(f"running again: {why}")
     ray = ray_executor.connect(address) if executor == "ray" and todo else None
-    for robot_spec in {(s.robot, s.preset): s for s in todo}.values():
-        ensure_dataset(robot_spec)
     done: list[str] = []
 
     def finish(key: str) -> None:
@@ -89,7 +111,7 @@ def sweep(
         else:
             run_each(_run_quietly, todo, workers, finish)
     except KeyboardInterrupt:
-        have = sum(finished(s) for s in specs)
+        have = sum(finished(s, hashes[s.dataset_id]) for s in specs)
         raise SymbenchError(
             f"interrupted with {have} of {len(specs)} runs finished; run the "
             "same command again to resume"

@@ -1,13 +1,18 @@
-"""`symbench sweep`: many runs, resumable, locally or on a Ray cluster."""
+"""`symbench sweep`: many runs, resumable, locally or on a Ray cluster.
+
+The data axis of the grid is either `--robots` (each robot's standard dataset of the preset)
+or `--datasets` (cached ids, generated or imported); `--preset` gives the budgets, by default
+a standard dataset's own preset, else `small` (as in `symbench run`)."""
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 
 import click
 
 from symbench.core.common.cli_types import SEED, WORKERS, CommaList, WritableFolder
-from symbench.core.runs.runner import DEFAULT_EVALUATORS, RunSpec
+from symbench.core.runs.runner import DEFAULT_EVALUATORS, RunSpec, default_preset
 
 
 @click.command("sweep")
@@ -15,7 +20,18 @@ from symbench.core.runs.runner import DEFAULT_EVALUATORS, RunSpec
     "--models", required=True, type=CommaList(), help="Comma-separated, e.g. sdnn,sdgnn,ffnn."
 )
 @click.option(
-    "--robots", required=True, type=CommaList(), help="Comma-separated, e.g. magneto,hexa,nona."
+    "--robots",
+    default=None,
+    type=CommaList(),
+    help="Comma-separated, e.g. magneto,hexa,nona: their standard datasets of the preset.",
+)
+@click.option(
+    "--datasets",
+    "--dataset",
+    "datasets",
+    default=None,
+    type=CommaList(),
+    help="Comma-separated cached dataset ids, generated or imported (instead of --robots).",
 )
 @click.option(
     "--splits", default="iid", show_default=True, type=CommaList(), help="Comma-separated splits."
@@ -30,7 +46,11 @@ from symbench.core.runs.runner import DEFAULT_EVALUATORS, RunSpec
 @click.option(
     "--backends", default="torch", show_default=True, type=CommaList(), help="torch, jax or both."
 )
-@click.option("--preset", default="small", show_default=True)
+@click.option(
+    "--preset",
+    default=None,
+    help="The budgets of every run; default: a standard dataset's own preset, else small.",
+)
 @click.option(
     "--evaluators", default=",".join(DEFAULT_EVALUATORS), show_default=True, type=CommaList()
 )
@@ -49,30 +69,57 @@ from symbench.core.runs.runner import DEFAULT_EVALUATORS, RunSpec
     default=None,
     help="Ray cluster address HOST:PORT (default: start a local cluster).",
 )
+@click.option(
+    "--overwrite",
+    is_flag=True,
+    help="Run again and replace records of another configuration found at the runs' paths "
+    "(refused otherwise).",
+)
 def sweep(
     models: list[str],
-    robots: list[str],
+    robots: list[str] | None,
+    datasets: list[str] | None,
     splits: list[str],
     seeds: list[int],
     backends: list[str],
-    preset: str,
+    preset: str | None,
     evaluators: list[str],
     output: Path,
     workers: int,
     executor: str,
     address: str | None,
+    overwrite: bool,
 ) -> None:
-    """Run every combination; runs with a valid record are skipped, so it resumes."""
+    """Run every combination; runs with a record of their configuration are skipped, so it
+    resumes."""
     from symbench.core.runs import sweep as sweeping
 
+    if (robots is None) == (datasets is None):
+        raise click.UsageError("give --robots (their standard datasets) or --datasets, not both")
     base = RunSpec(
         model="",
         robot="",
-        preset=preset,
+        preset=preset or "small",
         evaluators=tuple(evaluators),
         output=output,
         workers=workers,
         progress=False,
+        overwrite=overwrite,
     )
-    specs = sweeping.plan(models, robots, splits, seeds, backends, base)
+    if robots is not None:
+        specs = sweeping.plan(models, robots, splits, seeds, backends, base)
+    else:
+        specs = [
+            spec
+            for did in datasets or ()
+            for spec in sweeping.plan(
+                models,
+                (),
+                splits,
+                seeds,
+                backends,
+                replace(base, preset=preset or default_preset(did)),
+                datasets=[did],
+            )
+        ]
     sweeping.sweep(specs, workers=workers, executor=executor, address=address, report=click.echo)
