@@ -182,10 +182,17 @@ def test_sample_efficiency_trains_on_the_presets_fractions(monkeypatch, tmp_path
         return _trained(split, variant)
 
     monkeypatch.setattr(sample_efficiency, "sample_efficiency_png", lambda *args: None)
-    dataset = SimpleNamespace(spec=SimpleNamespace(name="hexa"))
+    dataset = SimpleNamespace(spec=SimpleNamespace(name="hexa"), id="hexa-climb-small-v4")
     context = _context(PRESETS["small"], dataset, retrain=retrain)
     context.output_dir = tmp_path
-    curve = sample_efficiency.evaluate(context)["rmse_by_fraction"]
+    metrics = sample_efficiency.evaluate(context)
+    curve = metrics["rmse_by_fraction"]
+    e = context.entry  # the plot is named like the run's record: no run overwrites another's
+    assert metrics["plot"] == str(
+        tmp_path
+        / f"hexa-climb-small-v4__small__{e.name}__{e.variant}__{e.backend}__seed{context.seed}"
+        "-sample-efficiency.png"
+    )
     assert list(curve) == ["0.1", "0.25", "0.5", "0.75", "1.0"]  # the published metric keys
     assert asked == ["fraction-0.1", "fraction-0.25", "fraction-0.5", "fraction-0.75", "iid"]
     asked.clear()

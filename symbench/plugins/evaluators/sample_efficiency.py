@@ -17,7 +17,9 @@ def evaluate(context: EvaluationContext) -> dict:
     for f in context.preset.sample_efficiency.fractions:
         curve[str(f)] = split_metrics(context.on_split(f"fraction-{f:g}"))["rmse"]
     curve["1.0"] = split_metrics(context.on_split("iid"))["rmse"]
-    plot = context.output_dir / f"{context.robot.name}-{context.entry.name}-sample-efficiency.png"
+    e = context.entry  # one plot per run: named like its record, so no run overwrites another's
+    run = f"{context.dataset.id}__{context.preset.name}__{e.name}__{e.variant}__{e.backend}"
+    plot = context.output_dir / f"{run}__seed{context.seed}-sample-efficiency.png"
     label = f"{context.entry.name} ({context.entry.backend})"
     x = [float(f) for f in curve]
     sample_efficiency_png(
