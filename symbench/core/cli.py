@@ -11,8 +11,10 @@ command or option, a value of the wrong type or out of range), 1 for a command t
 from __future__ import annotations
 
 import json
+import os
 import sys
 import warnings
+from typing import NoReturn
 
 import click
 from rich.console import Console
@@ -59,12 +61,20 @@ class SymbenchGroup(LazyGroup):
             raise click.UsageError(str(UnknownNameError("command", name, self.list_commands(ctx))))
         return super().resolve_command(ctx, args)
 
+    def make_context(self, *args, **kwargs) -> click.Context:
+        try:  # parsing prints --help and --version
+            return super().make_context(*args, **kwargs)
+        except BrokenPipeError:
+            closed_stdout()
+
     def invoke(self, ctx: click.Context):
         reported = report_plugin_problems()  # before a long command starts ...
         try:
             return super().invoke(ctx)
         except (click.ClickException, click.exceptions.Exit, click.Abort):
             raise  # click's own: usage errors (2), exit statuses, Ctrl-C
+        except BrokenPipeError:
+            closed_stdout()  # the reader went away (`| head`): not an error of the command
         except Exception as exc:
             if ctx.params.get("debug"):
                 raise
@@ -140,13 +150,39 @@ def list_command(kind: str, as_json: bool) -> None:
     if as_json:
         click.echo(json.dumps(rows, indent=2))
         return
-    table = Table(title=f"symbench {kind}")
+    console = StdoutConsole()
+    console.print(rows_table(f"symbench {kind}", rows, console))
+
+
+def rows_table(title: str, rows: list[dict], console: Console) -> Table:
+    """One row per entry; on a terminal too narrow for that, one block of field/value lines
+    per entry (long values wrap, names fold, nothing is cut off)."""
     columns = list(rows[0]) if rows else ["name"]
-    for c in columns:
-        table.add_column(c)
+    widths = {c: max([len(c), *(len(str(r.get(c, ""))) for r in rows)]) for c in columns}
+    table = Table(title=title)
+    for i, c in enumerate(columns):  # the first column (names) is never folded
+        table.add_column(c, overflow="fold", min_width=widths[c] if i == 0 else None)
     for row in rows:
         table.add_row(*(str(row.get(c, "")) for c in columns))
-    Console().print(table)
+    # the names in full, every other column at least 12 characters (or its longest value)
+    needed = widths[columns[0]] + sum(min(12, widths[c]) for c in columns[1:])
+    if needed + 3 * len(columns) + 1 <= console.width:
+        return table
+    blocks = Table(title=title, show_header=False)
+    blocks.add_column("field", style="bold", overflow="fold", max_width=max(map(len, columns)))
+    blocks.add_column("value", overflow="fold")
+    for row in rows:
+        for i, c in enumerate(columns):
+            blocks.add_row(c, str(row.get(c, "")), end_section=i == len(columns) - 1)
+    return blocks
+
+
+class StdoutConsole(Console):
+    """Standard output; a reader that went away ends the command with status 141, like any
+    program writing into a closed pipe (rich itself would exit 1, the status of a failure)."""
+
+    def on_broken_pipe(self) -> None:
+        closed_stdout()
 
 
 @cli.command("plugins")
@@ -184,6 +220,19 @@ def show_warning(message, category, filename, lineno, file=None, line=None) -> N
     stderr.print(Text.assemble(("warning:", "yellow"), f" {message}"), soft_wrap=True)
 
 
+# The exit status of a command whose standard output was closed by its reader (`| head`):
+# 128 + SIGPIPE, what the shell reports for any program that a closed pipe stopped.
+CLOSED_PIPE_STATUS = 141
+
+
+def closed_stdout() -> NoReturn:
+    """Stop quietly after the reader of standard output went away: what is still buffered
+    goes to /dev/null (so flushing at exit cannot raise again), exit status 141."""
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    os.dup2(devnull, sys.stdout.fileno())
+    sys.exit(CLOSED_PIPE_STATUS)
+
+
 def main() -> None:
     warnings.showwarning = show_warning
     try:
@@ -191,3 +240,5 @@ def main() -> None:
     except SymbenchError as exc:  # raised outside a command, e.g. while adding commands
         stderr.print(f"[red]error:[/] {exc}", soft_wrap=True)
         sys.exit(1)
+    except BrokenPipeError:  # outside a command, e.g. `symbench --help | head -1`
+        closed_stdout()

@@ -1,4 +1,5 @@
-"""The symmetry group of a registered robot, read from its spec."""
+"""The symmetry groups of registered robots, read from their specs: the built-in ones and
+every robot that an installed plugin registers."""
 
 from __future__ import annotations
 
@@ -8,6 +9,19 @@ BUILTIN_ROBOTS = ("magneto", "hexa", "nona")
 
 
 def robot_group(name: str) -> LegGroup:
+    """The group of the registered robot `name` (built-in or from a plugin)."""
     from symbench.core.robot.specs import load_robot
 
     return load_robot(name).group
+
+
+def registered_robots() -> tuple[str, ...]:
+    """Every registered robot, built-in and plugin, sorted by name."""
+    from symbench.core.plugin import registry
+
+    return tuple(sorted(registry.collect("robots")))
+
+
+def robot_groups() -> dict[str, LegGroup]:
+    """The group of every registered robot, by robot name."""
+    return {name: robot_group(name) for name in registered_robots()}

@@ -1,8 +1,11 @@
 """pytest plugin (entry point `pytest11`): the equivariance kit as fixtures.
 
     def test_my_model_is_equivariant(symbench_kit, symbench_groups):
-        for group in symbench_groups.values():
+        for group in symbench_groups.values():  # every registered robot, plugins' included
             symbench_kit.assert_equivariant(my_entry, group)
+
+    def test_one_robot_at_a_time(symbench_kit, symbench_robot, symbench_group):
+        symbench_kit.assert_equivariant(my_entry, symbench_group)  # one test per robot
 
 `--symbench-samples N` sets the number of random inputs per group element. Importing this
 module imports neither torch nor JAX.
@@ -51,7 +54,24 @@ def symbench_kit(request: pytest.FixtureRequest) -> Kit:
 
 @pytest.fixture(scope="session")
 def symbench_groups() -> dict[str, LegGroup]:
-    """The symmetry groups of the built-in robots, by robot name."""
-    from symbench.testing.groups import BUILTIN_ROBOTS, robot_group
+    """The symmetry groups of every registered robot (built-in and plugin), by robot name."""
+    from symbench.testing.groups import robot_groups
 
-    return {name: robot_group(name) for name in BUILTIN_ROBOTS}
+    return robot_groups()
+
+
+def pytest_generate_tests(metafunc: pytest.Metafunc) -> None:
+    """A test that asks for `symbench_robot` runs once per registered robot (id: its name)."""
+    if "symbench_robot" in metafunc.fixturenames:
+        from symbench.testing.groups import registered_robots
+
+        names = list(registered_robots())
+        metafunc.parametrize("symbench_robot", names, ids=names, scope="session")
+
+
+@pytest.fixture
+def symbench_group(symbench_robot: str) -> LegGroup:
+    """The symmetry group of this test's `symbench_robot`."""
+    from symbench.testing.groups import robot_group
+
+    return robot_group(symbench_robot)

@@ -109,3 +109,70 @@ def test_plugins_and_list_give_json(builtins):
 def test_unknown_names_are_clear_errors(args, status, message):
     result = run(*args)
     assert (result.returncode, result.stdout, result.stderr) == (status, "", message + "\n")
+
+
+# --- a closed standard output, narrow terminals ------------------------------------------
+
+
+def closed_pipe_run(*args: str) -> subprocess.CompletedProcess:
+    """`symbench ARGS` writing into a pipe whose reader has already gone (`| head` done)."""
+    read, write = os.pipe()
+    os.close(read)
+    try:
+        env = dict(os.environ, SYMBENCH_PLUGINS="none")
+        return subprocess.run(
+            [SYMBENCH, *args], stdout=write, stderr=subprocess.PIPE, text=True, env=env
+        )
+    finally:
+        os.close(write)
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ("list", "models"),  # a rich table
+        ("list", "robots", "--json"),  # click.echo
+        ("--help",),  # outside a command
+        ("sim", "check", "--robot", "magneto", "--seconds", "0.02"),
+        ("sim", "check", "--robot", "magneto", "--seconds", "0.02", "--json"),
+    ],
+)
+def test_a_closed_stdout_exits_141_without_a_message(args):
+    """Status 141 (128 + SIGPIPE, as for any program writing into a closed pipe): not 1,
+    the status of a failure or of a detached robot, and no traceback or error line."""
+    result = closed_pipe_run(*args)
+    assert (result.returncode, result.stderr) == (141, "")
+
+
+def test_the_closed_stdout_check_can_fail():
+    """A command that fails for another reason still says so, with status 1."""
+    result = closed_pipe_run("sim", "check", "--robot", "hexx")
+    assert result.returncode == 1 and "unknown robot 'hexx'" in result.stderr
+
+
+def run_at_width(columns: int, *args: str) -> subprocess.CompletedProcess:
+    env = dict(os.environ, SYMBENCH_PLUGINS="none", COLUMNS=str(columns))
+    return subprocess.run([SYMBENCH, *args], capture_output=True, text=True, timeout=120, env=env)
+
+
+@pytest.mark.parametrize("kind", ["models", "robots", "evaluators", "splits"])
+def test_list_tables_fit_a_narrow_terminal(kind):
+    """At 40 columns every line fits, and every name and every word of every description
+    is there in full (folded onto lines, never cut off with an ellipsis)."""
+    result = run_at_width(40, "list", kind)
+    lines = result.stdout.splitlines()
+    assert max(len(line) for line in lines) <= 40, result.stdout
+    assert "…" not in result.stdout
+    cells = " ".join(
+        part.strip() for line in lines for part in line.split("│")[1:-1] if part.strip()
+    )
+    for entry in json.loads(run("list", kind, "--json").stdout):
+        assert entry["name"] in cells.split()
+        for word in str(entry.get("description", "")).split():
+            assert word in cells, (word, result.stdout)
+
+
+def test_list_tables_keep_one_row_per_entry_when_they_fit():
+    result = run_at_width(200, "list", "robots")
+    rows = [line for line in result.stdout.splitlines() if line.startswith("│ ")]
+    assert [r.split("│")[1].strip() for r in rows] == ["hexa", "magneto", "nona"]

@@ -3,104 +3,39 @@ symbench/ and every file of the top-level robots/ (as symbench/plugins/robots/sp
 installed into a fresh virtual environment outside the repository, it lists and simulates the
 built-in robots from there.
 
-Nothing is downloaded: the wheel is built with `--no-build-isolation` (the setuptools of this
-environment) and installed with `--no-deps`; the fresh environment sees this environment's
-third-party packages through a folder of links to them that leaves out every symbench
-distribution, so no editable finder can supply a file that the wheel lacks.
+Nothing is downloaded, and nothing but the wheel supplies symbench there (conftest.py).
 """
 
 from __future__ import annotations
 
 import json
-import os
-import shutil
-import subprocess
 import sys
-import sysconfig
 import tarfile
-import venv
 import zipfile
 from pathlib import Path
 
 import pytest
+from fresh_env import ROOT, FreshEnv, files_under, run
 
-ROOT = Path(__file__).resolve().parents[2]
 ROBOTS = ROOT / "robots"
 SPECS_IN_WHEEL = "symbench/plugins/robots/specs"
 BUILT_IN = ["hexa", "magneto", "nona"]
 
 
-def skip(folder: str, names: list[str]) -> set[str]:
-    """What a build never reads: caches, environments, outputs (a stale build/ hides omissions)."""
-    skipped = shutil.ignore_patterns(".*", "__pycache__", "*.egg-info")(folder, names)
-    if Path(folder) == ROOT:
-        skipped |= {"build", "dist", "runs", "results"} & set(names)
-    return skipped
+class Installed(FreshEnv):
+    """symbench's wheel and sdist, and a fresh virtual environment with the wheel installed."""
 
-
-def files_under(folder: Path) -> list[str]:
-    return sorted(
-        p.relative_to(folder).as_posix()
-        for p in folder.rglob("*")
-        if p.is_file() and "__pycache__" not in p.parts
-    )
-
-
-def run(args: list, cwd: Path, env: dict | None = None) -> subprocess.CompletedProcess:
-    result = subprocess.run(
-        [str(a) for a in args], cwd=cwd, env=env, capture_output=True, text=True, timeout=300
-    )
-    assert result.returncode == 0, f"{args}\n{result.stdout}\n{result.stderr}"
-    return result
-
-
-class Installed:
-    """The wheel, the sdist and a fresh virtual environment with the wheel installed."""
-
-    def __init__(self, tmp: Path) -> None:
-        self.tmp = tmp
-        source = tmp / "source"
-        shutil.copytree(ROOT, source, ignore=skip)
-        dist = tmp / "dist"
-        no_network = ["--no-index", "--no-deps", "--disable-pip-version-check"]
-        pip = [sys.executable, "-m", "pip"]
-        run([*pip, "wheel", "-q", *no_network, "--no-build-isolation", "-w", dist, source], tmp)
-        (self.wheel,) = dist.glob("symbench-*.whl")
+    def __init__(self, tmp: Path, source: Path, wheel: Path) -> None:
+        self.wheel = wheel
         sdist = "from setuptools import build_meta; print(build_meta.build_sdist('../dist'))"
         run([sys.executable, "-c", sdist], source)
-        (self.sdist,) = dist.glob("symbench-*.tar.gz")
-
-        self.venv = tmp / "fresh-venv"
-        venv.EnvBuilder(with_pip=False).create(self.venv)
-        self.python = self.venv / "bin" / "python"
-        run([*pip, "--python", self.python, "install", "-q", *no_network, self.wheel], tmp)
-        self.site = Path(
-            run(
-                [self.python, "-c", "import sysconfig; print(sysconfig.get_path('purelib'))"], tmp
-            ).stdout.strip()
-        )
-        # This environment's third-party packages, without symbench and its editable finders;
-        # addsitedir runs their .pth files (cmeel puts proxsuite on sys.path with one).
-        deps = tmp / "deps"
-        deps.mkdir()
-        for entry in Path(sysconfig.get_path("purelib")).iterdir():
-            if not entry.name.lower().startswith(("symbench", "__editable__")):
-                (deps / entry.name).symlink_to(entry)
-        (self.site / "_symbench_test_deps.pth").write_text(
-            f"import site; site.addsitedir({str(deps)!r})\n"
-        )
-        self.env = {
-            k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "SYMBENCH_PLUGINS")
-        } | {"MUJOCO_GL": "disable", "PYTHONNOUSERSITE": "1", "SYMBENCH_HOME": str(tmp / "home")}
-
-    def symbench(self, *args: str) -> subprocess.CompletedProcess:
-        """The installed `symbench` command, run outside the repository."""
-        return run([self.venv / "bin" / "symbench", *args], self.tmp, self.env)
+        (self.sdist,) = wheel.parent.glob("symbench-*.tar.gz")
+        super().__init__(tmp, [wheel])
 
 
 @pytest.fixture(scope="module")
-def installed(tmp_path_factory) -> Installed:
-    return Installed(tmp_path_factory.mktemp("wheel"))
+def installed(tmp_path_factory, symbench_wheel) -> Installed:
+    return Installed(tmp_path_factory.mktemp("wheel"), *symbench_wheel)
 
 
 def test_the_wheel_holds_every_module_and_every_robot_file(installed):

@@ -54,6 +54,13 @@ def sim() -> None:
     default=None,
     help="Seconds between whole-body QP solves [default: every physics step, 1 ms].",
 )
+@click.option(
+    "--symmetry-seconds",
+    type=FiniteFloat(),
+    default=None,
+    help="Seconds over which each symmetry twin is compared with the run "
+    "[default: the whole run]; 0 skips the symmetry check.",
+)
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
 def check_command(
     robot: str,
@@ -64,19 +71,24 @@ def check_command(
     seconds: float,
     seed: int,
     control_period: float | None,
+    symmetry_seconds: float | None,
     as_json: bool,
 ) -> None:
-    """Run the controller; exit status 1 when the robot detached."""
+    """Run the controller, and its twin under each generator of the robot's symmetry group
+    (turned, or mirrored, and relabelled); exit status 1 when the robot detached or a twin
+    differs from the run by more than the tolerance."""
     from symbench.core.sim.check import check
     from symbench.core.sim.scenario import Scenario
 
     scenario = Scenario(robot, inclination, heading, yaw, direction, None, seed, seconds)
-    report = check(scenario, control_period)
+    symmetry = seconds if symmetry_seconds is None else symmetry_seconds
+    report = check(scenario, control_period, symmetry)
     if as_json:
         click.echo(json.dumps(report.to_dict(), indent=2))
     else:
         _print_report(report)
-    if not report.attached:
+        _print_symmetry(report)
+    if not (report.attached and report.symmetric):
         sys.exit(1)
 
 
@@ -105,6 +117,23 @@ def _print_report(report) -> None:
         f"  real-time factor: {m['real_time_factor']:.2f} "
         f"(controller every {m['control_period'] * 1000:g} ms)"
     )
+
+
+def _print_symmetry(report) -> None:
+    from symbench.core.sim.symmetry import TOLERANCE
+
+    if report.symmetry is None:
+        return
+    click.echo(
+        f"  symmetry over {report.symmetry_seconds:g} s, twin under each generator "
+        f"(largest relative error per column, tolerance {TOLERANCE:g}):"
+    )
+    for g in report.symmetry:
+        if g.error is None:
+            click.echo(f"    {g.generator}: not simulated ({g.note})")
+            continue
+        verdict = "ok" if g.ok else "BROKEN"
+        click.echo(f"    {g.generator}: error {g.error:.1e} ({g.worst_column}) {verdict}")
 
 
 @sim.command("mjcf")
