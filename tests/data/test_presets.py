@@ -26,9 +26,9 @@ from symbench.plugins.splits import symbench_splits
 
 # The published board was made with these numbers: changing one is a new protocol.
 BUDGETS = {
-    "smoke": {"max_epochs": 3, "horizon_s": 0.3, "grid_seconds": 1.0},
-    "small": {"max_epochs": 60, "horizon_s": 10.0, "grid_seconds": 2.6},
-    "paper": {"max_epochs": 500, "horizon_s": 10.0, "grid_seconds": 10.0},
+    "smoke": {"max_epochs": 3, "horizon_s": 1.0, "references": 2, "grid_seconds": 1.0},
+    "small": {"max_epochs": 60, "horizon_s": 2.6, "references": 6, "grid_seconds": 2.6},
+    "paper": {"max_epochs": 500, "horizon_s": 10.0, "references": 8, "grid_seconds": 10.0},
 }
 # What the dataset metadata stores (and so its content hash covers), in this order.
 GRID_KEYS = [
@@ -55,7 +55,13 @@ def test_the_budgets_are_those_of_the_published_board():
     for name, budget in BUDGETS.items():
         p = PRESETS[name]
         assert p.training.max_epochs == budget["max_epochs"]
-        assert p.closed_loop == ClosedLoop(seconds=budget["horizon_s"], scenarios=2)
+        assert p.closed_loop == ClosedLoop(
+            seconds=budget["horizon_s"],
+            references=budget["references"],
+            pd_fractions=(0.0, 0.1, 0.3, 1.0),
+            headline_pd=0.1,
+        )
+        assert p.closed_loop.seconds == p.dataset.seconds  # the horizon: a whole climb
         assert p.dataset.seconds == budget["grid_seconds"]
         assert p.evaluation == Evaluation(max_samples=4096, invariance_trials=4)
         assert p.sample_efficiency == SampleEfficiency(fractions=(0.1, 0.25, 0.5, 0.75))
@@ -79,7 +85,12 @@ def test_presets_json_is_every_preset_with_every_number():
         assert shown[name] == json.loads(json.dumps(dataclasses.asdict(p)))
         assert list(shown[name]) == ["name", "description", *SECTIONS]
     assert shown["paper"]["training"] == {"max_epochs": 500}
-    assert shown["smoke"]["closed_loop"] == {"seconds": 0.3, "scenarios": 2}
+    assert shown["smoke"]["closed_loop"] == {
+        "seconds": 1.0,
+        "references": 2,
+        "pd_fractions": [0.0, 0.1, 0.3, 1.0],
+        "headline_pd": 0.1,
+    }
     assert shown["small"]["sample_efficiency"] == {"fractions": [0.1, 0.25, 0.5, 0.75]}
     assert shown["paper"]["dataset"]["inclinations_deg"] == [57.29577951308232, 90.0]
 
@@ -144,34 +155,51 @@ def _trained(split: str, variant: str) -> TrainedOnSplit:
     return TrainedOnSplit(split, variant, lambda inputs: np.zeros((2, 6, 3)), test)
 
 
-@pytest.mark.parametrize("scenarios", [1, 3])
-def test_closed_loop_tracks_the_presets_scenarios_over_its_horizon(monkeypatch, scenarios):
-    simulated = []
+@pytest.mark.parametrize("references", [1, 3])
+def test_closed_loop_tracks_the_presets_references_over_its_horizon(monkeypatch, references):
+    simulated, tracked = [], []
 
-    def simulate(scenario):
+    def simulate(scenario, record_period):
+        assert record_period == 0.001  # every physics step
         simulated.append(scenario)
-        return SimpleNamespace(attached=True, arrays={})
+        steps = int(round(scenario.seconds / 0.001))
+        arrays = {"t": 0.001 * np.arange(steps), "tau": np.zeros((steps, 6, 3))}
+        return SimpleNamespace(attached=True, arrays=arrays)
 
     def track(scenario, reference, policy, pd):
+        tracked.append(pd)
         return SimpleNamespace(
-            attached=True, time_to_failure_s=0.05, joint_rmse_rad=0.0, failure=None
+            attached=True,
+            time_to_failure_s=scenario.seconds,
+            joint_rmse_rad=0.0,
+            base_drift_m=0.0,
+            base_drift_deg=0.0,
+            failure=None,
         )
 
     monkeypatch.setattr(symbench, "simulate", simulate)
     monkeypatch.setattr(symbench, "track", track)
-    budget = ClosedLoop(seconds=0.05, scenarios=scenarios)
+    budget = ClosedLoop(
+        seconds=0.05, references=references, pd_fractions=(0.0, 0.5), headline_pd=0.5
+    )
     preset = dataclasses.replace(PRESETS["small"], closed_loop=budget)
     dataset = SimpleNamespace(
-        spec=SimpleNamespace(control=SimpleNamespace(kp=20.0, kd=3.0)),
+        spec=SimpleNamespace(
+            control=SimpleNamespace(kp=20.0, kd=3.0, timestep=0.001),
+            group=SimpleNamespace(rotation_order=1),
+        ),
         frames=None,
         trajectory_ids=np.arange(4),
         scenarios=[{"robot": "hexa", "yaw_deg": 10.0 * i} for i in range(4)],
     )
     context = _context(preset, dataset, retrain=_trained, test_trajectories=[3, 2, 1, 0])
     metrics = closed_loop.evaluate(context)
-    assert metrics["horizon_s"] == 0.05 and metrics["references"] == scenarios
-    assert [s.seconds for s in simulated] == [0.05] * scenarios
-    assert [s.yaw_deg for s in simulated] == [30.0, 20.0, 10.0][:scenarios]
+    assert metrics["horizon_s"] == pytest.approx(0.05) and metrics["references"] == references
+    assert metrics["pd_fractions"] == [0.0, 0.5] and metrics["pd_gains"] == [10.0, 1.5]
+    assert [s.seconds for s in simulated] == [0.05] * references
+    assert [s.yaw_deg for s in simulated] == [0.0, 10.0, 20.0][:references]  # in id order
+    # model, oracle and floor at every fraction, for every reference
+    assert tracked == ([(0.0, 0.0)] * 3 + [(10.0, 1.5)] * 3) * references
 
 
 def test_sample_efficiency_trains_on_the_presets_fractions(monkeypatch, tmp_path):

@@ -28,3 +28,17 @@ def detachment(
     if height < 0.3 * height0:
         return f"base dropped to {height:.3f} m above the surface"
     return None
+
+
+PATH_LIMIT_STEPS = 0.5  # base further than this many step lengths from its reference: lost
+
+
+def off_path(base_pos: np.ndarray, reference_pos: np.ndarray, step_length: float) -> str | None:
+    """Why a controller tracking a reference climb has lost it, or None while it follows:
+    its base is more than half a step length from where the reference's base is at the same
+    time (its feet would then land a half step off their planned places). Only learned
+    controllers are judged by it; the expert has no reference but its plan."""
+    drift = float(np.linalg.norm(base_pos - reference_pos))
+    if drift > PATH_LIMIT_STEPS * step_length:
+        return f"base left its path ({drift:.3f} m from the reference, over half a step)"
+    return None

@@ -1,21 +1,38 @@
 """A learned inverse-dynamics model as the robot's controller, tracking a reference climb.
 
-At every control step (the physics step, 1 kHz) the model gets the measured state plus the
-desired state one record period ahead (the `next` variant's q_next, qd_next, interpolated
-from the reference, which is sampled every record period like the training data); the base
-acceleration and the magnets come from the reference as the desired motion. Its torques,
-clipped to the limits, are applied: the paper's inverse-dynamics controller. Optionally a
-small PD term towards the same desired state is added (the paper's PD-augmented
-comparison).
+The reference is the expert's climb recorded at every physics step (`expert_reference`):
+its `tau` is the joint torque the servo really applied over each step (see rollout.py), so
+replaying it reproduces the expert's trajectory to rounding, and the loop below actuates
+exactly what that label means.
 
-The robot counts as fallen when the base tilts or drops (as for the expert) or when a
-stance foot (magnet on in the reference) stays off the surface for more than GRACE_S: a
+At every physics step (1 kHz) the policy gets two raw rows, as in the `next` variant: the
+measured state now (what is not measured, the base acceleration, qdd and the magnet flags,
+comes from the reference at the same time) and the desired state `lookahead` seconds
+ahead (the record period the model was trained on). Its torque is the feedforward; a joint
+PD at `pd_gains` about the desired state at the current time closes the loop. The magnets
+get the gait plan's continuous command (the same ramp the expert used), rebuilt from the
+scenario, which is deterministic.
+
+Actuation. The simulated servo applies u - Kp q_t - Kd qd_t+1 (clipped), its damping taken
+implicitly at the end-of-step velocity (model.py). The loop commands
+
+    u = tau_ff + kp (q_ref,t - q_t) + Kp q_t + kd qd_ref,t+1 + (Kd - kd) (qd_t + dt qdd_ref,t)
+
+with (kp, kd) the PD gains, so the applied torque is
+
+    tau_ff + kp (q_ref,t - q_t) + kd (qd_ref,t+1 - qd_t+1) + (Kd - kd) dt (qdd_ref,t - qdd_t):
+
+the feedforward, the PD (its damping, like the servo's, at the end of the step) and a
+residual that vanishes whenever the joints accelerate as the reference did (it acts as an
+apparent inertia (Kd - kd) dt, a few 1e-3 kg m^2, not as feedback on position or
+velocity). On the reference the applied torque is exactly tau_ff: with the recorded tau as
+feedforward the expert's command comes back to rounding, at every PD gain.
+
+The robot counts as fallen when the base tilts or drops (as for the expert), when its base
+is more than half a step length from the reference's (it lost its path: `off_path`), or when
+a stance foot (magnet on in the reference) stays off the surface for more than GRACE_S: a
 learned controller that lands a swing foot a few tens of milliseconds late has not fallen,
 and the magnet pulls the foot in once it is within reach.
-
-The joint servos of the simulated robot are cancelled (u = tau + Kp q + Kd qd), so the
-applied torque is the model's; only MuJoCo's implicit treatment of the servo damping
-remains, a difference of Kd (qd_t - qd_t+1) per 1 ms step.
 """
 
 from __future__ import annotations
@@ -25,12 +42,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from symbench.core.sim.failure import detachment
+from symbench.core.common.errors import SymbenchError
+from symbench.core.sim.failure import detachment, off_path
 from symbench.core.sim.scenario import Scenario
 
 GRACE_S = 0.1  # s a stance foot may stay off the surface before the climb counts as failed
+LOOKAHEAD_S = 0.006  # s: the record period of the standard datasets (the `next` variant)
 
-# per-sample policy: raw columns of two rows (now, reference next) -> torques (n_legs, 3)
+# per-sample policy: raw columns of two rows (now, desired ahead) -> torques (n_legs, 3)
 Policy = Callable[[dict[str, np.ndarray]], np.ndarray]
 
 
@@ -38,17 +57,29 @@ Policy = Callable[[dict[str, np.ndarray]], np.ndarray]
 class Tracking:
     attached: bool
     failure: str | None
-    time_to_failure_s: float  # the full duration when it held on
+    time_to_failure_s: float  # the full horizon when it held on
     joint_rmse_rad: float  # against the reference, over the time it held on
     steps: int
+    max_joint_error_rad: float = float("nan")  # over the time it held on
+    base_drift_m: float = float("nan")  # base position error at the last step it held on
+    base_drift_deg: float = float("nan")  # base orientation error then
 
 
-def _desired(reference: dict[str, np.ndarray], t: float, period: float) -> dict[str, np.ndarray]:
-    """q and qd of the reference at time t (linear between its samples)."""
-    s = t / period
-    k = min(int(s), len(reference["t"]) - 2)
-    a = s - k
-    return {c: (1 - a) * reference[c][k] + a * reference[c][k + 1] for c in ("q", "qd")}
+def expert_reference(scenario: Scenario):
+    """The expert's climb of `scenario` recorded at every physics step (a `Rollout`): the
+    reference `track` needs. Its rows every 6 ms are the dataset's rows of the scenario."""
+    from symbench.core.sim.rollout import simulate
+    from symbench.core.sim.setup import Climb
+
+    timestep = Climb.from_scenario(scenario).spec.control.timestep
+    return simulate(scenario, record_period=timestep)
+
+
+def _angle_deg(q1: np.ndarray, q2: np.ndarray) -> float:
+    """The rotation angle between two orientations (w, x, y, z), in degrees."""
+    w = float(q1[0] * q2[0] + q1[1:] @ q2[1:])
+    v = q1[0] * q2[1:] - q2[0] * q1[1:] - np.cross(q1[1:], q2[1:])
+    return float(np.degrees(2.0 * np.arctan2(np.linalg.norm(v), abs(w))))
 
 
 def track(
@@ -56,57 +87,97 @@ def track(
     reference: dict[str, np.ndarray],
     policy: Policy,
     pd_gains: tuple[float, float] = (0.0, 0.0),
+    lookahead: float = LOOKAHEAD_S,
 ) -> Tracking:
-    """Run `policy` on `scenario` against `reference` (raw columns every record period)."""
+    """Run `policy` on `scenario` against `reference` (raw columns at every physics step,
+    see `expert_reference`) over the reference's whole length."""
     import mujoco
 
     from symbench.core.sim.setup import Climb
     from symbench.core.sim.task import load_climb
 
     climb = Climb.from_scenario(scenario)
+    spec = climb.spec
+    dt = spec.control.timestep
     n_rows = len(reference["t"])
-    period = float(reference["t"][1] - reference["t"][0])
-    duration = period * (n_rows - 2)  # the desired state one period ahead must exist
-    env = load_climb(climb, time_limit=duration + 1.0)
+    if n_rows < 2 or abs(float(reference["t"][1] - reference["t"][0]) - dt) > 1e-9:
+        raise SymbenchError(
+            f"track: the reference must be recorded at every physics step ({dt} s); "
+            "make it with expert_reference(scenario)"
+        )
+    ahead = max(1, int(round(lookahead / dt)))
+    env = load_climb(climb, time_limit=n_rows * dt + 1.0)
     env.reset()
     physics, task = env.physics, env.task
     model, data, lay = physics.model.ptr, physics.data.ptr, physics.layout
-    spec = climb.spec
     kp, kd, limit = spec.control.kp, spec.control.kd, spec.control.torque_limit
     pd_p, pd_d = pd_gains
-    normal, height0 = task.plan.normal, float(task.plan.base_start @ task.plan.normal)
-    errors, failure = [], None
+    plan = task.plan
+    normal, height0 = plan.normal, float(plan.base_start @ plan.normal)
+    ref_q, ref_qd, ref_qdd = reference["q"], reference["qd"], reference["qdd"]
+    stance_ref = reference["magnet"] > 0.5
+    unmeasured = [c for c in reference if c not in ("t", "base_pos", "base_quat")]
+    errors = np.zeros((n_rows, *ref_q.shape[1:]))
+    failure, last, pose = None, -1, np.zeros(7)
     off_steps = np.zeros(spec.n_legs, dtype=int)  # consecutive steps a stance foot is off
-    grace = int(round(GRACE_S / model.opt.timestep))
-    for _ in range(int(round(duration / model.opt.timestep))):
-        k = int(data.time / period + 1e-9)  # the reference sample now
-        # what the robot measures (the observation's magnet column is only the last command)
-        now = {**task.get_observation(physics), "t": np.array(data.time)}
-        del now["magnet"]
-        contact = now["contact"] > 0.5
-        stance = reference["magnet"][k] > 0.5
-        off_steps = np.where(stance & ~contact, off_steps + 1, 0)
+    grace = int(round(GRACE_S / dt))
+    step_length = spec.gait.step_length
+    for k in range(n_rows):
+        t = float(data.time)
+        q, qd = data.qpos[lay.qpos].copy(), data.qvel[lay.dof].copy()
+        contact = physics.contact_flags()
+        off_steps = np.where(stance_ref[k] & ~contact, off_steps + 1, 0)
         off_too_long = off_steps > grace  # only these count as stance feet that left
-        failure = detachment(off_too_long, ~off_too_long, data, lay.base_body, normal, height0)
+        failure = detachment(
+            off_too_long, ~off_too_long, data, lay.base_body, normal, height0
+        ) or off_path(data.qpos[:3], reference["base_pos"][k], step_length)
         if failure is not None:
             break
-        errors.append(now["q"] - _desired(reference, data.time, period)["q"])
-        target = _desired(reference, data.time + period, period)
+        last, pose = k, data.qpos[:7].copy()
+        errors[k] = q - ref_q[k]
         # measured state now; what is not measured (base acceleration, qdd, magnets) is the
-        # desired motion from the reference, like the desired state one period ahead
-        rows = {
-            c: np.stack(
-                [now[c] if c in now else reference[c][k], target.get(c, reference[c][k + 1])]
-            )
-            for c in reference
+        # desired motion from the reference, like the desired state `lookahead` ahead
+        now = {
+            "t": np.array(t),
+            "base_pos": data.qpos[:3].copy(),
+            "base_quat": data.qpos[3:7].copy(),
+            "base_linvel": data.qvel[:3].copy(),
+            "base_angvel": physics.base_angular_velocity(),
+            "q": q,
+            "qd": qd,
+            "contact": contact.astype(np.float64),
         }
-        q, qd = now["q"], now["qd"]
-        tau = np.asarray(policy(rows), dtype=np.float64)
-        tau = np.clip(tau + pd_p * (target["q"] - q) + pd_d * (target["qd"] - qd), -limit, limit)
-        data.ctrl[lay.magnet] = reference["magnet"][k]
-        data.ctrl[lay.motor] = tau + kp * q + kd * qd
+        j = min(k + ahead, n_rows - 1)
+        rows = {
+            c: np.stack([now[c] if c in now else reference[c][k], reference[c][j]])
+            for c in (*now, *unmeasured)
+            if c in reference
+        }
+        tau_ff = np.clip(np.asarray(policy(rows), dtype=np.float64), -limit, limit)
+        qd_next = ref_qd[k + 1] if k + 1 < n_rows else ref_qd[k] + dt * ref_qdd[k]
+        data.ctrl[lay.motor] = (
+            tau_ff
+            + pd_p * (ref_q[k] - q)
+            + kp * q
+            + pd_d * qd_next
+            + (kd - pd_d) * (qd + dt * ref_qdd[k])
+        )
+        data.ctrl[lay.magnet] = plan.targets(t).magnet
         mujoco.mj_step2(model, data)
         mujoco.mj_step1(model, data)
-    held = float(data.time) if failure is not None else duration
-    rmse = float(np.sqrt(np.mean(np.square(errors)))) if errors else float("nan")
-    return Tracking(failure is None, failure, held, rmse, len(errors))
+    held = float(data.time) if failure is not None else n_rows * dt
+    if last < 0:
+        return Tracking(False, failure, held, float("nan"), 0)
+    held_errors = errors[: last + 1]
+    drift = float(np.linalg.norm(pose[:3] - reference["base_pos"][last]))
+    turn = _angle_deg(pose[3:7], reference["base_quat"][last])
+    return Tracking(
+        failure is None,
+        failure,
+        held,
+        float(np.sqrt(np.mean(np.square(held_errors)))),
+        last + 1,
+        float(np.max(np.abs(held_errors))),
+        drift,
+        turn,
+    )
