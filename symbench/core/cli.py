@@ -11,16 +11,15 @@ command or option, a value of the wrong type or out of range), 1 for a command t
 from __future__ import annotations
 
 import json
-import os
 import sys
 import warnings
-from typing import NoReturn
 
 import click
 from rich.console import Console
 from rich.table import Table
 from rich.text import Text
 
+from symbench.core.common.console import StdoutConsole, closed_stdout
 from symbench.core.common.errors import SymbenchError, UnknownNameError
 from symbench.core.common.jsonfile import one_line
 from symbench.core.common.lazy_group import LazyGroup
@@ -177,14 +176,6 @@ def rows_table(title: str, rows: list[dict], console: Console) -> Table:
     return blocks
 
 
-class StdoutConsole(Console):
-    """Standard output; a reader that went away ends the command with status 141, like any
-    program writing into a closed pipe (rich itself would exit 1, the status of a failure)."""
-
-    def on_broken_pipe(self) -> None:
-        closed_stdout()
-
-
 @cli.command("plugins")
 @click.pass_context
 def plugins_command(ctx: click.Context) -> None:
@@ -222,15 +213,6 @@ def show_warning(message, category, filename, lineno, file=None, line=None) -> N
 
 # The exit status of a command whose standard output was closed by its reader (`| head`):
 # 128 + SIGPIPE, what the shell reports for any program that a closed pipe stopped.
-CLOSED_PIPE_STATUS = 141
-
-
-def closed_stdout() -> NoReturn:
-    """Stop quietly after the reader of standard output went away: what is still buffered
-    goes to /dev/null (so flushing at exit cannot raise again), exit status 141."""
-    devnull = os.open(os.devnull, os.O_WRONLY)
-    os.dup2(devnull, sys.stdout.fileno())
-    sys.exit(CLOSED_PIPE_STATUS)
 
 
 def main() -> None:

@@ -5,10 +5,10 @@ from __future__ import annotations
 import json
 
 import click
-from rich.console import Console
 from rich.table import Table
 
 from symbench.core.common.cli_types import SEED
+from symbench.core.common.console import StdoutConsole
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import BACKENDS
 from symbench.testing.equivariance import EquivarianceReport, check_model
@@ -68,7 +68,7 @@ def check_equivariance(
 
 
 def _print(report: EquivarianceReport) -> None:
-    console = Console()
+    console = StdoutConsole()
     colour = "green" if report.equivariant else ("red" if report.claims else "yellow")
     title = (
         f"{report.model}/{report.backend} on {report.group} ({report.n_legs} legs): "

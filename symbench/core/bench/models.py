@@ -21,6 +21,7 @@ from rich.table import Table
 
 from symbench.core.bench.flops import MATMUL_SIZE, matmul_flops_per_s, step_flops_per_sample
 from symbench.core.common.cli_types import POSITIVE
+from symbench.core.common.console import StdoutConsole
 from symbench.core.data.model_dims import dims_of
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import BACKENDS
@@ -166,7 +167,7 @@ def bench_models(
     if as_json:
         click.echo(json.dumps(report, indent=2))
         return
-    Console().print(_table(report))
+    StdoutConsole().print(_table(report))
 
 
 def _table(report: dict[str, Any]) -> Table:

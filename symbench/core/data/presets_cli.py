@@ -7,9 +7,9 @@ from dataclasses import asdict, fields
 from typing import Any
 
 import click
-from rich.console import Console
 from rich.table import Table
 
+from symbench.core.common.console import StdoutConsole
 from symbench.core.data.presets import PRESETS, Preset
 
 # the groups of a Preset, in the order they are shown
@@ -59,4 +59,4 @@ def presets(as_json: bool) -> None:
     if as_json:
         click.echo(json.dumps(doc, indent=2))
         return
-    Console().print(presets_table(doc))
+    StdoutConsole().print(presets_table(doc))

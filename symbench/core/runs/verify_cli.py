@@ -7,10 +7,10 @@ import tempfile
 from pathlib import Path
 
 import click
-from rich.console import Console
 from rich.table import Table
 
 from symbench.core.common.cli_types import NON_NEGATIVE, WORKERS
+from symbench.core.common.console import StdoutConsole
 from symbench.core.runs.verify import ATOL, RTOL, Tolerance, Verification, verify_record
 
 
@@ -63,7 +63,7 @@ def verify(
     if as_json:
         click.echo(json.dumps([r.to_dict() for r in results], indent=2))
     else:
-        console = Console()
+        console = StdoutConsole()
         console.print(f"agreement: {tolerance} (numbers and booleans; text is not compared)")
         for result in results:
             console.print(_table(result))
