@@ -7,7 +7,7 @@ so `import symbench` stays light (no torch, JAX or MuJoCo until a name that need
 
 Registering plugins
     hookimpl, ModelEntry, RobotEntry, EvaluatorEntry, SplitEntry, Lazy, BACKENDS, VIEWS,
-    VARIANTS, SymbenchError, InvalidEntryError
+    VARIANTS, EVALUATOR_NEEDS, SymbenchError, InvalidEntryError
 Building models
     ModelDims, ViewArrays, LegGroup, act, schema
 Writing evaluators
@@ -44,6 +44,7 @@ _PUBLIC: dict[str, str] = {
     "BACKENDS": "symbench.core.plugin.entries:BACKENDS",
     "VIEWS": "symbench.core.plugin.entries:VIEWS",
     "VARIANTS": "symbench.core.plugin.entries:VARIANTS",
+    "EVALUATOR_NEEDS": "symbench.core.plugin.entries:EVALUATOR_NEEDS",
     "InvalidEntryError": "symbench.core.plugin.entries:InvalidEntryError",
     "Lazy": "symbench.core.common.lazy:Lazy",
     "SymbenchError": "symbench.core.common.errors:SymbenchError",
@@ -76,6 +77,7 @@ _PUBLIC: dict[str, str] = {
 
 __all__ = [
     "BACKENDS",
+    "EVALUATOR_NEEDS",
     "PRESETS",
     "VARIANTS",
     "VIEWS",
@@ -145,6 +147,7 @@ if TYPE_CHECKING:  # what type checkers and editors see
     from symbench.core.data.views import build_view
     from symbench.core.plugin.entries import (
         BACKENDS,
+        EVALUATOR_NEEDS,
         VARIANTS,
         VIEWS,
         EvaluatorEntry,

@@ -90,6 +90,19 @@ def test_wrong_callables_and_rates_fail_when_made():
         RobotEntry("r", spec_dir=None)
 
 
+def test_evaluator_needs_are_checked_when_made():
+    entry = EvaluatorEntry("e", evaluate=len, needs=["simulator", "variant:next"])
+    assert entry.needs == ("simulator", "variant:next")  # kept as a tuple
+    assert EvaluatorEntry("e", evaluate=len).needs == ()
+    assert set(entry.needs) <= set(symbench.EVALUATOR_NEEDS)
+    with pytest.raises(InvalidEntryError, match="evaluator 'e': need 'simulation' is not one of"):
+        EvaluatorEntry("e", evaluate=len, needs=("simulation",))
+    with pytest.raises(InvalidEntryError, match="needs must be a tuple of names"):
+        EvaluatorEntry("e", evaluate=len, needs="simulator")
+    with pytest.raises(InvalidEntryError, match="needs names one twice"):
+        EvaluatorEntry("e", evaluate=len, needs=("raw", "raw"))
+
+
 class Misspelt:
     """A third party's plugin whose second model names a view that does not exist."""
 

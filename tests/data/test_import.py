@@ -130,7 +130,7 @@ def test_cli_import_info_and_export(smoke_hexa, home, tmp_path):
     out = runner.invoke(cli, ["data", "import", str(tmp_path / "x"), "--id", "again"])
     assert out.exit_code == 0, out.output
     again = load_dataset("again")
-    assert " ".join(out.output.split()) == (  # rich wraps at the terminal's width
+    assert " ".join(out.output.split()).endswith(  # rich wraps; the plan's lines come first
         f"imported 4 trajectories ({info['samples']} samples) as again; "
         f"content hash {again.content_hash}"
     )
@@ -154,3 +154,69 @@ def test_cli_import_info_and_export(smoke_hexa, home, tmp_path):
         for name, counts in info["splits"].items()
     ]
     assert [row[0] for row in rows] == sorted(registry.collect("splits"))
+
+
+def _manifest(folder, **fields):
+    (folder / "import.json").write_text(
+        json.dumps({"robot": "hexa", "record_period_s": 0.006, **fields})
+    )
+
+
+@pytest.mark.parametrize(
+    ("scenario", "message"),
+    [
+        ({"direction": "walkset"}, r"direction \(file run\.parquet\): .*'forward'.*'walkset'"),
+        ({"inclination_deg": 400}, r"inclination_deg \(file run\.parquet\): .*180.*got 400"),
+        ({"heading_deg": "north"}, r"heading_deg \(file run\.parquet\): .*number.*'north'"),
+    ],
+)
+def test_scenario_values_are_validated_in_one_line(home, tmp_path, scenario, message):
+    folder = _write_log(tmp_path / "logs")
+    _manifest(folder, trajectories=[{"file": "run.parquet", "scenario": scenario}])
+    with pytest.raises(SymbenchError, match=r"trajectories\.0\.scenario\.") as exc:
+        import_logs(folder, "logs")
+    assert "\n" not in str(exc.value)
+    assert __import__("re").search(message, str(exc.value)), str(exc.value)
+
+
+def test_extra_keys_are_provenance_and_misspelt_fields_are_refused(home, tmp_path):
+    folder = _write_log(tmp_path / "logs")
+    _manifest(folder, source="lab A", license="CC-BY-4.0", notes="wall runs")
+    ds = import_logs(folder, "logs")
+    assert ds.metadata["provenance"] == {
+        "source": "lab A",
+        "license": "CC-BY-4.0",
+        "notes": "wall runs",
+    }
+    _manifest(folder, trajectoris=[])
+    with pytest.raises(
+        SymbenchError, match="unknown field 'trajectoris' .did you mean 'trajectories'"
+    ):
+        import_logs(folder, "logs", force=True)
+
+
+def test_unknown_contact_is_stored_and_views_refuse(home, tmp_path):
+    folder = _write_log(
+        tmp_path / "logs", edit=lambda c: [c.pop(f"contact.leg{i}") for i in range(6)]
+    )
+    with pytest.raises(
+        SymbenchError, match='declare it in import.json: "unknown": \\["contact"\\]'
+    ):
+        import_logs(folder, "logs")
+    _manifest(folder, unknown=["contact"])
+    ds = import_logs(folder, "logs")
+    assert ds.metadata["unknown_columns"] == ["contact"]
+    with pytest.raises(
+        SymbenchError, match="declared contact unknown.*leg_grouped view uses contact"
+    ):
+        ds.view("leg_grouped", "acc")
+
+
+def test_a_longer_period_is_refused_and_the_hash_ignores_path_and_id(home, tmp_path):
+    folder = _write_log(tmp_path / "logs", edit=lambda c: c.__setitem__("t", c["t"] * 2))
+    _manifest(folder, record_period_s=0.012)
+    with pytest.raises(SymbenchError, match="longer than the robot's record period 0.006 s"):
+        import_logs(folder, "logs")
+    a = import_logs(_write_log(tmp_path / "one"), "one")
+    b = import_logs(_write_log(tmp_path / "two" / "deeper"), "two")
+    assert a.content_hash == b.content_hash

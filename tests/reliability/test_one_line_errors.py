@@ -124,16 +124,16 @@ def test_metadata_missing_a_key_is_named(smoke_hexa, key):
         ),
         (
             lambda m: m.update(record_period_s="0.006"),
-            "{path}: record_period_s: Input should be a valid number",
+            "{path}: record_period_s: Input should be a valid number, got '0.006'",
         ),
         (
             lambda m: m.update(trajectories=[{"file": 7}]),
-            "{path}: trajectories.0.file: Input should be a valid string",
+            "{path}: trajectories.0.file (file 7): Input should be a valid string, got 7",
         ),
         (
             lambda m: m.update(trajectories=[{"file": "run0.npz", "scenario": [1]}]),
-            "{path}: trajectories.0.scenario: Input should be a valid dictionary or instance of "
-            "ScenarioFields",
+            "{path}: trajectories.0.scenario (file run0.npz): Input should be a valid dictionary or "
+            "instance of ScenarioFields",
         ),
     ],
     ids=["Infinity", "NaN", "text for a number", "number for a file", "list for a scenario"],

@@ -1,4 +1,4 @@
-"""`symbench data generate|info|import|export`."""
+"""`symbench data generate|info|import|export|symmetry`."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ import click
 from rich.console import Console
 from rich.table import Table
 
-from symbench.core.common.cli_types import SEED, WORKERS, WritableFolder
+from symbench.core.common.cli_types import SEED, WORKERS, CommaList, WritableFolder
 from symbench.core.data.presets import PRESETS
 
 console = Console()
@@ -85,13 +85,30 @@ def _print_reference(dataset_id: str, content_hash: str) -> None:
 @data.command("info")
 @click.argument("dataset_id")
 @click.option("--seed", default=0, show_default=True, type=SEED, help="Seed of the splits.")
+@click.option(
+    "--split-by",
+    default=None,
+    help="Also show a split by a scenario column (heading, yaw, inclination, direction, "
+    "seed), with --train and --test, as `symbench run` takes it.",
+)
+@click.option("--train", "train_values", default=None, type=CommaList())
+@click.option("--test", "test_values", default=None, type=CommaList())
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
-def info_command(dataset_id: str, seed: int, as_json: bool) -> None:
-    """Trajectories, samples, failures and per-split counts of a cached dataset."""
+def info_command(
+    dataset_id: str,
+    seed: int,
+    split_by: str | None,
+    train_values: list[str] | None,
+    test_values: list[str] | None,
+    as_json: bool,
+) -> None:
+    """Trajectories, samples, failures, provenance and per-split counts and scenario values
+    of a cached dataset."""
     from symbench.core.data.dataset import load_dataset
     from symbench.core.data.info import dataset_info
 
-    info = dataset_info(load_dataset(dataset_id), seed)
+    column = split_option(None, split_by, train_values, test_values)
+    info = dataset_info(load_dataset(dataset_id), seed, [column] if column else [])
     if as_json:
         click.echo(json.dumps(info, indent=2))
         return
@@ -102,6 +119,14 @@ def info_command(dataset_id: str, seed: int, as_json: bool) -> None:
     )
     console.print(f"content hash {info['content_hash']}")
     _print_failures(info["failures"])
+    for key, value in sorted(info["provenance"].items()):
+        console.print(f"{key}: {value}", soft_wrap=True, markup=False)
+    for name in info["unknown_columns"]:
+        console.print(f"[yellow]unknown:[/] {name} (declared unknown at import; views refuse)")
+    for step in (info["import"] or {}).get("steps", []):
+        console.print(f"import: {step}", soft_wrap=True, markup=False)
+    if info["scenarios"]:
+        console.print(f"scenarios: {_values(info['scenarios'])}", markup=False)
     table = Table(title=f"splits (seed {seed}): trajectories / samples")
     for column in ("split", "train", "val", "test", "disjoint"):
         table.add_column(column)
@@ -115,17 +140,76 @@ def info_command(dataset_id: str, seed: int, as_json: bool) -> None:
         ]
         table.add_row(name, *cells, "yes" if counts["disjoint"] else "[red]NO[/]")
     console.print(table)
+    sides = Table(title="scenario values on each side of each split")
+    for column in ("split", "train", "val", "test"):
+        sides.add_column(column)
+    for name, counts in info["splits"].items():
+        if "error" not in counts:
+            sides.add_row(
+                name, *(_values(counts[p]["scenarios"]) for p in ("train", "val", "test"))
+            )
+    console.print(sides)
+
+
+def _values(scenarios: dict[str, list]) -> str:
+    """`heading 0,90; yaw 0` from {"heading_deg": [0, 90], "yaw_deg": [0]}."""
+
+    def shown(v: object) -> str:
+        return f"{v:g}" if isinstance(v, float) else str(v)
+
+    return "; ".join(
+        f"{column.removesuffix('_deg')} {','.join(shown(v) for v in values)}"
+        for column, values in scenarios.items()
+    )
+
+
+def split_option(
+    split: str | None,
+    split_by: str | None,
+    train: list[str] | None,
+    test: list[str] | None,
+) -> str | None:
+    """The column split that --split-by/--train/--test describe (its name, as records keep
+    it, e.g. heading_0_90_vs_180_270), else --split."""
+    if split_by is None:
+        if train is not None or test is not None:
+            raise click.UsageError("--train and --test go with --split-by")
+        return split
+    if split is not None:
+        raise click.UsageError("--split and --split-by choose the split twice; use one")
+    if train is None or test is None:
+        raise click.UsageError("--split-by needs --train and --test values")
+    from symbench.core.common.errors import SymbenchError
+    from symbench.core.data.splits import column_split
+
+    try:
+        return column_split(split_by, train, test).name
+    except SymbenchError as exc:
+        raise click.UsageError(str(exc)) from None
 
 
 @data.command("import")
 @click.argument("folder", type=click.Path(exists=True, file_okay=False, path_type=Path))
 @click.option("--id", "dataset_id", default=None, help="Dataset id (default: the folder's name).")
 @click.option("--force", is_flag=True, help="Replace a cached dataset of the same id.")
-def import_command(folder: Path, dataset_id: str | None, force: bool) -> None:
+@click.option(
+    "--dry-run",
+    is_flag=True,
+    help="Check every file and say what would be derived, dropped and resampled, and why; "
+    "write nothing.",
+)
+def import_command(folder: Path, dataset_id: str | None, force: bool, dry_run: bool) -> None:
     """Import external logs: FOLDER holds import.json and one Parquet/npz file per trajectory."""
-    from symbench.core.data.importer import import_logs
+    from symbench.core.data.importer import import_logs, prepare_import
 
-    ds = import_logs(folder, dataset_id or folder.resolve().name, force)
+    dataset_id = dataset_id or folder.resolve().name
+    prepared = prepare_import(folder, dataset_id)
+    for line in prepared[0].lines():
+        console.print(line, soft_wrap=True, markup=False)
+    if dry_run:
+        console.print("dry run: nothing written")
+        return
+    ds = import_logs(folder, dataset_id, force, prepared)
     console.print(
         f"imported {len(ds.trajectory_ids)} trajectories ({int(ds.n_samples.sum())} "
         f"samples) as [bold]{ds.id}[/]; content hash {ds.content_hash}"
@@ -145,3 +229,54 @@ def export_command(dataset_id: str, folder: Path, fmt: str) -> None:
 
     export_dataset(load_dataset(dataset_id), folder, fmt)
     console.print(f"exported {dataset_id} to {folder}")
+
+
+@data.command("symmetry")
+@click.argument("dataset_id")
+@click.option(
+    "--output",
+    type=WritableFolder(),
+    default=None,
+    help="Folder for the plot symmetry-<ID>.png (default: symmetry.png in the dataset's folder).",
+)
+@click.option("--json", "as_json", is_flag=True, help="Print JSON (every pair and column).")
+def symmetry_command(dataset_id: str, output: Path | None, as_json: bool) -> None:
+    """How symmetric a dataset is: trajectories that are images of each other under the
+    robot's group, compared after relabelling, against a noise floor."""
+    from rich.markup import escape
+
+    from symbench.core.data.dataset import load_dataset
+    from symbench.core.data.symmetry_report import PLOT_NAME, dataset_symmetry, symmetry_png
+
+    dataset = load_dataset(dataset_id)
+    report = dataset_symmetry(dataset)
+    plot = output / f"symmetry-{dataset_id}.png" if output else dataset.root / PLOT_NAME
+    report.plot = str(symmetry_png(report, plot))
+    if as_json:
+        click.echo(json.dumps(report.to_dict(), indent=2))
+        return
+    elements = sorted({p.element.name for p in report.pairs})
+    console.print(
+        f"[bold]{escape(dataset_id)}[/] (robot {report.robot}, group {report.group}): "
+        f"{len(report.pairs)} image pairs among {report.trajectories} trajectories "
+        f"({', '.join(elements)}); noise floor from {report.floor_source}"
+        + (f" ({report.repeats} repeat pairs)" if report.floor_source == "repeats" else "")
+    )
+    table = Table(
+        title="relative RMS error after relabelling, against the noise floor",
+        caption="; ".join(f"{k}: {', '.join(v['columns'])}" for k, v in report.groups.items()),
+    )
+    for column in ("group", "error", "floor", "error / floor", "verdict"):
+        table.add_column(column, justify="left" if column in ("group", "verdict") else "right")
+    for label, row in report.groups.items():
+        table.add_row(
+            label,
+            f"{row['relative_error']:.3g}",
+            f"{row['relative_floor']:.3g}",
+            "-" if row["ratio"] is None else f"{row['ratio']:.3g}",
+            escape(row["verdict"]),
+        )
+    for flag, share in report.flags.items():
+        table.add_row(f"{flag} flags", f"{share:.3g}", "", "", "share of rows differing")
+    console.print(table)
+    console.print(f"plot: {report.plot}", soft_wrap=True)

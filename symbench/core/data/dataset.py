@@ -16,6 +16,7 @@ import numpy as np
 
 from symbench.core.common.arrays import ViewArrays
 from symbench.core.common.errors import SymbenchError
+from symbench.core.data.derive import require_known
 from symbench.core.data.frames import LegFrames
 from symbench.core.data.metadata import read_metadata, verify
 from symbench.core.data.presets import parse_dataset_id
@@ -92,6 +93,7 @@ class Dataset:
 
     def view(self, view: str = "leg_grouped", variant: str = "acc") -> ViewArrays:
         """Every sample of the dataset in `view` ("leg_grouped", "vector", "body_graph")."""
+        require_known(self.metadata, view)
         raw, ids = self.raw()
         return build_view(raw, ids, self.frames, view, variant)
 

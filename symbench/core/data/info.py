@@ -1,7 +1,9 @@
-"""What `symbench data info` reports: sizes, failures and every registered split's counts."""
+"""What `symbench data info` reports: sizes, failures, provenance, every registered split's
+counts and the scenario values on each side of each split."""
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
@@ -10,25 +12,48 @@ from symbench.core.common.errors import SymbenchError
 from symbench.core.data.dataset import Dataset
 from symbench.core.plugin.registry import collect
 
+SCENARIO_COLUMNS = ("inclination_deg", "heading_deg", "yaw_deg", "direction")
+
+
+def scenario_values(ds: Dataset, ids: np.ndarray) -> dict[str, list[Any]]:
+    """The distinct values of each scenario column among trajectories `ids` (a column none of
+    them has is left out)."""
+    by_id = dict(zip(ds.trajectory_ids.tolist(), ds.scenarios, strict=True))
+    out: dict[str, list[Any]] = {}
+    for column in SCENARIO_COLUMNS:
+        values = {by_id[i].get(column) for i in ids.tolist()} - {None}
+        if values:
+            out[column] = sorted(values, key=lambda v: (isinstance(v, str), v))
+    return out
+
 
 def split_counts(ds: Dataset, split: str, seed: int) -> dict[str, Any]:
-    """Trajectories and samples per part, and whether the parts are disjoint."""
+    """Trajectories, samples and scenario values per part, and whether the parts are
+    disjoint."""
     try:
         parts = ds.split_indices(split, seed)
     except SymbenchError as exc:
         return {"error": str(exc)}
-    samples = dict(zip(ds.trajectory_ids.tolist(), ds.n_samples.tolist()))
+    samples = dict(zip(ds.trajectory_ids.tolist(), ds.n_samples.tolist(), strict=True))
     out: dict[str, Any] = {}
     for name in ("train", "val", "test"):
         ids = getattr(parts, name)
-        out[name] = {"trajectories": len(ids), "samples": int(sum(samples[i] for i in ids))}
+        out[name] = {
+            "trajectories": len(ids),
+            "samples": int(sum(samples[i] for i in ids)),
+            "scenarios": scenario_values(ds, ids),
+        }
     all_ids = np.concatenate([parts.train, parts.val, parts.test])
+    out["unused"] = len(ds.trajectory_ids) - len(all_ids)
     out["disjoint"] = len(np.unique(all_ids)) == len(all_ids)
     return out
 
 
-def dataset_info(ds: Dataset, seed: int = 0) -> dict[str, Any]:
+def dataset_info(ds: Dataset, seed: int = 0, splits: Sequence[str] = ()) -> dict[str, Any]:
+    """Everything `data info` shows; `splits` adds column splits (or any split by name) to
+    the registered ones."""
     meta = ds.metadata
+    names = list(collect("splits")) + [s for s in splits if s not in collect("splits")]
     return {
         "id": ds.id,
         "robot": ds.robot,
@@ -42,6 +67,10 @@ def dataset_info(ds: Dataset, seed: int = 0) -> dict[str, Any]:
         "record_period_s": meta["record_period_s"],
         "size_bytes": sum((ds.root / r["file"]).stat().st_size for r in meta["trajectories"]),
         "versions": meta["versions"],
-        "splits": {name: split_counts(ds, name, seed) for name in collect("splits")},
+        "provenance": meta.get("provenance", {}),
+        "unknown_columns": meta.get("unknown_columns", []),
+        "import": meta.get("import"),
+        "scenarios": scenario_values(ds, ds.trajectory_ids),
+        "splits": {name: split_counts(ds, name, seed) for name in names},
         "split_seed": seed,
     }

@@ -1,6 +1,7 @@
 """A dataset's metadata.json: provenance, per-file SHA-256 and the content hash.
 
-The content hash is the SHA-256 of the canonical metadata without the hash itself; the
+The content hash is the SHA-256 of the canonical metadata without the hash itself (and, for
+imported datasets, without the local folder, id and repair command: see LOCAL_FIELDS); the
 metadata holds every file's SHA-256, so the hash covers the trajectories, the scenario grid,
 the failures and the library versions. No timestamps are stored, which keeps the file (and
 the hash) identical when the same preset is generated twice on the same versions.
@@ -44,7 +45,23 @@ def dataset_dir(dataset_id: str) -> Path:
     return datasets_dir() / dataset_id
 
 
+# Where an imported dataset was imported from, and under which id: local facts, not content,
+# so the same logs imported on two machines (or under two ids) get the same content hash.
+LOCAL_FIELDS = ("id", "imported_from", "repair_command")
+
+
 def content_hash(meta: dict[str, Any]) -> str:
+    """SHA-256 of the canonical metadata without the hash itself; for an imported dataset,
+    without its local fields too (generated datasets hash every field, as they always did)."""
+    skip = {"content_hash"}
+    if meta.get("source") == "imported":
+        skip.update(LOCAL_FIELDS)
+    body = {k: v for k, v in meta.items() if k not in skip}
+    return sha256_bytes(canonical_json(body).encode())
+
+
+def _legacy_hash(meta: dict[str, Any]) -> str:
+    """The hash of datasets imported before LOCAL_FIELDS were left out (every field)."""
     body = {k: v for k, v in meta.items() if k != "content_hash"}
     return sha256_bytes(canonical_json(body).encode())
 
@@ -69,7 +86,9 @@ def read_metadata(dataset_id: str, missing_hint: str) -> tuple[Path, dict[str, A
             f"dataset '{dataset_id}' has format version {meta.get('format_version')},"
             f" this symbench reads {FORMAT_VERSION}; {meta.get('repair_command')}"
         )
-    if meta.get("content_hash") != content_hash(meta):
+    if meta.get("content_hash") != content_hash(meta) and not (
+        meta.get("source") == "imported" and meta.get("content_hash") == _legacy_hash(meta)
+    ):
         raise SymbenchError(
             f"dataset '{dataset_id}': metadata.json was edited or damaged "
             f"(content hash mismatch); rebuild it with: {meta.get('repair_command')}"
@@ -78,6 +97,11 @@ def read_metadata(dataset_id: str, missing_hint: str) -> tuple[Path, dict[str, A
         DatasetMetadata.model_validate(meta)
     except ValidationError as exc:
         raise explain(exc, f"dataset '{dataset_id}': {root / METADATA} is malformed") from None
+    if meta["id"] != dataset_id:  # an imported dataset's id is not hashed: it must match
+        raise SymbenchError(
+            f"dataset '{dataset_id}': {root / METADATA} names dataset '{meta['id']}' (a "
+            f"folder copied or renamed by hand); rebuild it with: {meta['repair_command']}"
+        )
     return root, meta
 
 

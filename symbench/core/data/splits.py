@@ -5,11 +5,14 @@ label: "train", "val", "test" or "unused". The core checks the result (one label
 non-empty train, val and test) and turns it into trajectory ids, so every model of a
 comparison sees exactly the same samples for a given dataset and seed. Validation always
 comes from the training side: `carve_validation` takes it out of the training trajectories.
-The standard splits themselves are a plugin (`symbench.plugins.splits`).
+The standard splits themselves are a plugin (`symbench.plugins.splits`). A column split
+(`column_split("heading", ["0", "90"], ["180", "270"])`, named `heading_0_90_vs_180_270`)
+is resolved here from its name, for any dataset whose scenarios hold that column.
 """
 
 from __future__ import annotations
 
+import re
 import zlib
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -17,7 +20,8 @@ from typing import Any
 
 import numpy as np
 
-from symbench.core.common.errors import SymbenchError
+from symbench.core.common.errors import SymbenchError, UnknownNameError
+from symbench.core.sim.scenario import DIRECTIONS
 
 LABELS = ("train", "val", "test", "unused")
 VAL_FRACTION = 0.15
@@ -85,9 +89,13 @@ def carve_validation(
 
 
 def resolve(split: str, context: SplitContext) -> SplitIndices:
-    """Run the registered split `split` and check what it returned."""
+    """Run the registered split `split` (or the column split it names, see `column_split`)
+    and check what it returned."""
     from symbench.core.plugin import registry
 
+    column = parse_column_split(split)
+    if column is not None:
+        return indices_from_labels(split, context, assign_column_split(column, context))
     entry = registry.split(split)
     try:
         labels = np.asarray(entry.assign(context), dtype=object)
@@ -115,3 +123,136 @@ def indices_from_labels(
             f"split '{split}' of dataset {context.dataset_id} leaves {', '.join(empty)} empty"
         )
     return SplitIndices(split, context.seed, **parts)
+
+
+# --- column splits: train and test chosen by the values of one scenario column ------------
+# `heading_0_90_vs_180_270` trains on headings 0 and 90 and tests on 180 and 270: the name
+# says the split and is a safe file name (it ends up in run keys). Values are joined by "_",
+# a minus sign is written "m" (`yaw_m45_vs_45`).
+COLUMNS = {  # the name on the command line: the scenario field
+    "heading": "heading_deg",
+    "yaw": "yaw_deg",
+    "inclination": "inclination_deg",
+    "direction": "direction",
+    "seed": "seed",
+}
+ANGLES = ("heading_deg", "yaw_deg")  # compared modulo 360
+_VALUE = re.compile(r"^(m?\d+(\.\d+)?|[a-z]+)$")
+
+
+@dataclass(frozen=True)
+class ColumnSplit:
+    column: str  # a key of COLUMNS
+    train: tuple[str, ...]
+    test: tuple[str, ...]
+
+    @property
+    def name(self) -> str:
+        return f"{self.column}_{'_'.join(self.train)}_vs_{'_'.join(self.test)}"
+
+    @property
+    def field(self) -> str:
+        return COLUMNS[self.column]
+
+    def describe(self) -> str:
+        shown = (",".join(v.replace("m", "-") for v in side) for side in (self.train, self.test))
+        return f"{self.column}: train on {next(shown)}, test on {next(shown)}"
+
+
+def _token(value: str, column: str) -> str:
+    """A value as the split's name writes it: a number in its shortest form, or a word."""
+    text = value.strip()
+    if column == "direction":
+        if text not in DIRECTIONS:
+            raise SymbenchError(f"direction '{text}' is not one of {', '.join(DIRECTIONS)}")
+        return text
+    try:
+        number = float(text)
+    except ValueError:
+        raise SymbenchError(f"{column} value '{text}' is not a number") from None
+    if not np.isfinite(number):
+        raise SymbenchError(f"{column} value '{text}' is not finite")
+    if column == "seed" and (number != int(number) or number < 0):
+        raise SymbenchError(f"seed value '{text}' is not a whole number >= 0")
+    return f"{number:g}".replace("-", "m")
+
+
+def column_split(column: str, train: Sequence[str], test: Sequence[str]) -> ColumnSplit:
+    """The split training on the trajectories whose scenario `column` takes a `train` value
+    and testing on those taking a `test` value; trajectories taking neither are unused. A
+    value listed on both sides would put its trajectories in training and test at once, and
+    is refused."""
+    if column not in COLUMNS:
+        raise UnknownNameError("split column", column, COLUMNS)
+    sides = []
+    for side, values in (("train", train), ("test", test)):
+        tokens = tuple(dict.fromkeys(_token(str(v), column) for v in values))
+        if not tokens:
+            raise SymbenchError(f"--{side} gives no {column} value")
+        sides.append(tokens)
+    both = [v for v in sides[0] if _same(v, sides[1], column)]
+    if both:
+        raise SymbenchError(
+            f"{column} {', '.join(v.replace('m', '-') for v in both)} is listed for both train "
+            "and test: its trajectories would be trained and tested on (leakage)"
+        )
+    return ColumnSplit(column, sides[0], sides[1])
+
+
+def _number(token: str) -> float:
+    return float(token.replace("m", "-"))
+
+
+def _same(token: str, tokens: Sequence[str], column: str) -> bool:
+    return any(_matches(np.asarray([token], dtype=object), t, column)[0] for t in tokens)
+
+
+def _matches(values: np.ndarray, token: str, column: str) -> np.ndarray:
+    """Which of a trajectory column's `values` equal `token` (angles modulo 360)."""
+    if column == "direction":
+        return np.asarray([v == token for v in values])
+    numbers = np.asarray([_number(v) if isinstance(v, str) else v for v in values], float)
+    target = _number(token)
+    if COLUMNS[column] in ANGLES:
+        diff = np.mod(numbers - target + 180.0, 360.0) - 180.0
+        return np.abs(diff) < 1e-6
+    return np.abs(numbers - target) < 1e-9
+
+
+def parse_column_split(name: str) -> ColumnSplit | None:
+    """The column split a name describes (`heading_0_90_vs_180_270`), else None."""
+    column, _, rest = name.partition("_")
+    if column not in COLUMNS or name.count("_vs_") != 1:
+        return None
+    train, test = rest.split("_vs_")
+    sides = [side.split("_") for side in (train, test)]
+    if not all(side and all(_VALUE.match(v) for v in side) for side in sides):
+        return None
+    split = column_split(column, *[[v.replace("m", "-") for v in s] for s in sides])
+    return split if split.name == name else None
+
+
+def assign_column_split(split: ColumnSplit, context: SplitContext) -> np.ndarray:
+    """Labels of a column split: train or test by the listed values, unused otherwise, then
+    validation carved out of the training side."""
+    values = context.values(split.field)
+    present = sorted({str(v) for v in values.tolist()})
+    labels = np.full(len(values), "unused", dtype=object)
+    for side, tokens in (("train", split.train), ("test", split.test)):
+        for token in tokens:
+            hit = _matches(values, token, split.column)
+            if not hit.any():
+                raise SymbenchError(
+                    f"dataset {context.dataset_id}: no trajectory has {split.column} "
+                    f"{token.replace('m', '-')} (it has {', '.join(present)})"
+                )
+            labels[hit] = side
+    return carve_validation(labels, context)
+
+
+def check_split(name: str) -> None:
+    """A registered split or a column split's name, else an error naming the closest."""
+    if parse_column_split(name) is None:
+        from symbench.core.plugin import registry
+
+        registry.split(name)

@@ -22,6 +22,15 @@ from symbench.core.common.errors import SymbenchError
 BACKENDS = ("torch", "jax")
 VIEWS = ("leg_grouped", "vector", "body_graph")
 VARIANTS = ("acc", "next")
+# What an evaluator may need from a dataset beyond its test samples (`EvaluatorEntry.needs`);
+# a run skips an evaluator whose needs its dataset does not meet, saying which and why.
+EVALUATOR_NEEDS = (
+    "simulator",  # replays the dataset's scenarios in the simulator (complete scenarios)
+    "scenarios",  # every scenario field of every trajectory (imported logs may lack some)
+    "variant:next",  # the `next` variant at the standard 6 ms record period
+    "raw",  # the raw base and joint states (`test_raw`, `predict_raw`)
+    "contact",  # contact flags that are known, not declared unknown by an import
+)
 
 _NAME = re.compile(r"[A-Za-z0-9][A-Za-z0-9_.+-]*")
 
@@ -103,15 +112,32 @@ class RobotEntry:
 
 @dataclass(frozen=True)
 class EvaluatorEntry:
-    """An evaluator: `evaluate(context)` returns a dict of metrics."""
+    """An evaluator: `evaluate(context)` returns a dict of metrics.
+
+    `needs` names what it needs from a dataset beyond its test samples, from
+    `EVALUATOR_NEEDS` (e.g. `("simulator", "variant:next")`); a run whose dataset does not
+    provide one skips the evaluator, recording the reason instead of its metrics.
+    """
 
     name: str
     evaluate: Callable[..., dict]
     description: str = ""
+    needs: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
         _check_name("evaluator", self.name)
         _check_callable("evaluator", self.name, "evaluate", self.evaluate)
+        needs = self.needs
+        if isinstance(needs, str) or not isinstance(needs, (tuple, list)):
+            raise InvalidEntryError(
+                f"evaluator '{self.name}': needs must be a tuple of names from "
+                f"{', '.join(EVALUATOR_NEEDS)}, got {needs!r}"
+            )
+        for need in needs:
+            _check_choice("evaluator", self.name, "need", need, EVALUATOR_NEEDS)
+        if len(set(needs)) != len(needs):
+            raise InvalidEntryError(f"evaluator '{self.name}': needs names one twice: {needs!r}")
+        object.__setattr__(self, "needs", tuple(needs))
 
 
 @dataclass(frozen=True)

@@ -3,6 +3,12 @@
 Evaluators see a trained model only through `predict`, so PyTorch and JAX models are judged
 by the same code. Evaluators that transform test scenes (equivariance, invariance) work on
 raw states and recompute the model's own view, so every representation gets the same test.
+
+An evaluator declares what it needs from the dataset (`EvaluatorEntry.needs`); a dataset
+provides what it holds (a generated one everything; an imported one no simulator replay when
+its scenarios are incomplete, ...). An evaluator whose needs are not met is skipped: its
+metrics are `{"skipped": "<one-line reason>"}`, shown in the run's table and kept in the
+record, and the run goes on.
 """
 
 from __future__ import annotations
@@ -17,11 +23,27 @@ import numpy as np
 
 from symbench.core.common.arrays import ViewArrays
 from symbench.core.common.errors import SymbenchError
-from symbench.core.data.presets import Preset
-from symbench.core.plugin.entries import ModelEntry
+from symbench.core.data.presets import RECORD_PERIOD, Preset
+from symbench.core.data.scenario_fields import SCENARIO_KEYS
+from symbench.core.plugin.entries import EvaluatorEntry, ModelEntry
 from symbench.core.plugin.registry import evaluator
 
 Predict = Callable[[dict[str, np.ndarray]], np.ndarray]
+
+SKIPPED = "skipped"  # the one metric of a skipped evaluator: why it could not run
+# what each need reads as in a skip reason ("needs a simulator replay: ...")
+NEED_TEXT = {
+    "simulator": "a simulator replay",
+    "scenarios": "complete scenarios",
+    "variant:next": f"the next variant at the {RECORD_PERIOD * 1000:g} ms record period",
+    "raw": "raw base and joint states",
+    "contact": "known contact flags",
+}
+PERIOD_TOLERANCE = 0.05  # relative: a record period this close to RECORD_PERIOD is the same
+# The scenario fields that make a scenario complete, enough for a simulator replay (a
+# missing leg order means the default one).
+REPLAY_FIELDS = tuple(k for k in SCENARIO_KEYS if k != "leg_order")
+RAW_COLUMNS = ("base_pos", "base_quat", "base_linvel", "base_angvel", "base_linacc", "q", "qd")
 
 
 @dataclass(frozen=True)
@@ -99,16 +121,78 @@ def relative_error(actual: np.ndarray, expected: np.ndarray) -> float:
     return float(np.max(np.abs(actual - expected))) / max(scale, np.finfo(np.float64).tiny)
 
 
+def _missing_fields(dataset: Any, fields: tuple[str, ...]) -> list[str]:
+    scenarios = dataset.scenarios
+    return [f for f in fields if any(s.get(f) is None for s in scenarios)]
+
+
+def _imported(dataset: Any) -> str:
+    return f"dataset '{dataset.id}' is imported"
+
+
+def unmet_need(need: str, dataset: Any) -> str | None:
+    """Why `dataset` does not provide `need` (one line), or None when it does. A generated
+    dataset provides everything; an imported one what its metadata and scenarios hold."""
+    meta = dataset.metadata
+    if need == "variant:next":
+        period = float(meta["record_period_s"])
+        if abs(period - RECORD_PERIOD) > PERIOD_TOLERANCE * RECORD_PERIOD:
+            return (
+                f"dataset '{dataset.id}' is recorded every {period * 1000:g} ms, so its next "
+                f"state is not the one {RECORD_PERIOD * 1000:g} ms ahead"
+            )
+        return None
+    unknown = set(meta.get("unknown_columns") or ())
+    if need in ("raw", "contact"):
+        columns = RAW_COLUMNS if need == "raw" else ("contact",)
+        declared = [c for c in columns if c in unknown]
+        if declared:
+            return f"dataset '{dataset.id}' declares {', '.join(declared)} unknown"
+        return None
+    if meta.get("source") == "generated":
+        return None
+    if need == "scenarios":
+        missing = _missing_fields(dataset, REPLAY_FIELDS)
+        if missing:
+            return f"{_imported(dataset)} and its scenarios lack {', '.join(missing)}"
+        return None
+    if need == "simulator":
+        missing = _missing_fields(dataset, REPLAY_FIELDS)
+        if missing:
+            return f"{_imported(dataset)} and its scenarios lack {', '.join(missing)}"
+        try:
+            _ = dataset.spec  # the registered robot, the very spec the logs were imported for
+        except SymbenchError as exc:
+            return f"{_imported(dataset)}: {exc}"
+        return None
+    raise SymbenchError(f"unknown evaluator need '{need}'")
+
+
+def skip_reason(entry: EvaluatorEntry, dataset: Any) -> str | None:
+    """The one-line reason why `entry` cannot run on `dataset` (its first unmet need), or
+    None when it can."""
+    for need in entry.needs:
+        why = unmet_need(need, dataset)
+        if why is not None:
+            return f"needs {NEED_TEXT[need]}: {why}"
+    return None
+
+
 def run_evaluators(
     names: list[str],
     context: EvaluationContext,
     progress: Callable[[str], None] = lambda name: None,
 ) -> dict[str, dict]:
-    """Each evaluator's metrics; one that raises, or returns anything but a JSON-ready
-    mapping of metric names, is named in the error."""
+    """Each evaluator's metrics; one whose needs the dataset does not meet is skipped
+    (`{"skipped": reason}`); one that raises, or returns anything but a JSON-ready mapping
+    of metric names, is named in the error."""
     results: dict[str, dict] = {}
     for name in names:
         entry = evaluator(name)
+        reason = skip_reason(entry, context.dataset)
+        if reason is not None:  # shown by the run's table, kept in the record
+            results[name] = {SKIPPED: reason}
+            continue
         progress(name)
         try:
             metrics = entry.evaluate(context)

@@ -12,9 +12,11 @@ from pathlib import Path
 
 import click
 from rich.console import Console
+from rich.markup import escape
 from rich.table import Table
 
 from symbench.core.common.cli_types import EPOCHS, SEED, WORKERS, CommaList, WritableFolder
+from symbench.core.data.cli import split_option
 from symbench.core.data.presets import PRESETS
 from symbench.core.runs.results import ResultRecord
 from symbench.core.runs.runner import (
@@ -46,7 +48,27 @@ from symbench.core.runs.runner import run as run_spec
     "default: the robot's standard dataset of the preset.",
 )
 @click.option("--backend", default="torch", show_default=True, help="torch or jax.")
-@click.option("--split", default="iid", show_default=True, help="A registered split.")
+@click.option("--split", default=None, help="A registered split (default: iid).")
+@click.option(
+    "--split-by",
+    default=None,
+    help="Split by a scenario column instead: heading, yaw, inclination, direction or seed "
+    "(with --train and --test).",
+)
+@click.option(
+    "--train",
+    "train_values",
+    default=None,
+    type=CommaList(),
+    help="With --split-by: the column's values to train on, e.g. 0,90.",
+)
+@click.option(
+    "--test",
+    "test_values",
+    default=None,
+    type=CommaList(),
+    help="With --split-by: the column's values to test on, e.g. 180,270 (others are unused).",
+)
 @click.option("--seed", default=0, show_default=True, type=SEED)
 @click.option(
     "--preset",
@@ -98,7 +120,10 @@ def run(
     robot_name: str | None,
     dataset: str | None,
     backend: str,
-    split: str,
+    split: str | None,
+    split_by: str | None,
+    train_values: list[str] | None,
+    test_values: list[str] | None,
     seed: int,
     preset: str | None,
     variant: str | None,
@@ -118,6 +143,7 @@ def run(
         raise click.UsageError("--full and --evaluators choose the evaluators twice; use one")
     if robot_name is None and dataset is None:
         raise click.UsageError("give --robot (its standard dataset) or --dataset")
+    split = split_option(split, split_by, train_values, test_values) or "iid"
     if preset is None:
         preset = default_preset(dataset)
     if dataset is not None:
@@ -158,7 +184,8 @@ def run(
 
 
 def metrics_table(record: ResultRecord) -> Table:
-    """The record's scalar metrics, one row each."""
+    """The record's scalar metrics, one row each; a skipped evaluator (or split) shows its
+    one-line reason."""
     m = record.model
     table = Table(
         title=f"{m.name} ({m.backend}) on {record.dataset.id}, split {record.split}, "
@@ -169,7 +196,12 @@ def metrics_table(record: ResultRecord) -> Table:
     table.add_column("value", justify="right")
     for evaluator, metrics in record.metrics.items():
         for name, value in metrics.items():
-            if isinstance(value, bool):
+            if name == "skipped" and isinstance(value, str):
+                table.add_row(evaluator, "[yellow]skipped[/]", escape(value))
+            elif name == "skipped_splits" and isinstance(value, dict):
+                for split, why in value.items():
+                    table.add_row(evaluator, f"[yellow]skipped split {split}[/]", escape(str(why)))
+            elif isinstance(value, bool):
                 table.add_row(evaluator, name, str(value))
             elif isinstance(value, (int, float)):
                 table.add_row(evaluator, name, f"{value:.4g}")

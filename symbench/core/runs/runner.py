@@ -33,6 +33,7 @@ from symbench.core.data.provenance import (
     plugin_info,
 )
 from symbench.core.data.schema import VARIANTS
+from symbench.core.data.splits import check_split
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import ModelEntry
 from symbench.core.runs.evaluation import EvaluationContext, TrainedOnSplit, run_evaluators
@@ -63,7 +64,7 @@ class RunSpec:
     model: str
     robot: str  # must be the dataset's robot
     backend: str = "torch"
-    split: str = "iid"
+    split: str = "iid"  # a registered split, or a column split (`splits.column_split`) name
     seed: int = 0
     preset: str = "small"
     variant: str | None = None  # None: the model's registered input variant
@@ -123,7 +124,7 @@ def check_names(spec: RunSpec) -> None:
     the run's robot."""
     model_entry(spec)
     registry.robot(spec.robot)
-    registry.split(spec.split)
+    check_split(spec.split)  # a registered split, or a column split's name
     for name in spec.evaluators:
         registry.evaluator(name)
     preset(spec.preset)

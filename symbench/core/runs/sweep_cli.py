@@ -34,7 +34,22 @@ from symbench.core.runs.runner import DEFAULT_EVALUATORS, RunSpec, default_prese
     help="Comma-separated cached dataset ids, generated or imported (instead of --robots).",
 )
 @click.option(
-    "--splits", default="iid", show_default=True, type=CommaList(), help="Comma-separated splits."
+    "--splits",
+    default=None,
+    type=CommaList(),
+    help="Comma-separated splits (default: iid, or only the --split-by split).",
+)
+@click.option(
+    "--split-by",
+    default=None,
+    help="Add a split by a scenario column: heading, yaw, inclination, direction or seed "
+    "(with --train and --test).",
+)
+@click.option(
+    "--train", "train_values", default=None, type=CommaList(), help="--split-by's training values."
+)
+@click.option(
+    "--test", "test_values", default=None, type=CommaList(), help="--split-by's test values."
 )
 @click.option(
     "--seeds",
@@ -79,7 +94,10 @@ def sweep(
     models: list[str],
     robots: list[str] | None,
     datasets: list[str] | None,
-    splits: list[str],
+    splits: list[str] | None,
+    split_by: str | None,
+    train_values: list[str] | None,
+    test_values: list[str] | None,
     seeds: list[int],
     backends: list[str],
     preset: str | None,
@@ -92,8 +110,14 @@ def sweep(
 ) -> None:
     """Run every combination; runs with a record of their configuration are skipped, so it
     resumes."""
+    from symbench.core.data.cli import split_option
     from symbench.core.runs import sweep as sweeping
 
+    column = split_option(None, split_by, train_values, test_values)
+    if column is None:
+        splits = splits or ["iid"]
+    else:
+        splits = [*(splits or []), column]
     if (robots is None) == (datasets is None):
         raise click.UsageError("give --robots (their standard datasets) or --datasets, not both")
     base = RunSpec(

@@ -14,8 +14,22 @@ from symbench.plugins.evaluators import (
 )
 
 MODULES = (torque_error, equivariance, invariance, generalization, sample_efficiency, closed_loop)
+# What each needs from the dataset beyond its test samples (symbench.EVALUATOR_NEEDS); a run
+# on a dataset without it skips the evaluator with the reason. The closed-loop evaluator
+# simulates the held-out scenarios and drives the robot with the `next` variant.
+NEEDS: dict[str, tuple[str, ...]] = {
+    torque_error.NAME: (),
+    equivariance.NAME: ("raw",),  # transforms raw test states
+    invariance.NAME: ("raw",),
+    generalization.NAME: (),  # trains on the standard splits it can, names the others
+    sample_efficiency.NAME: (),
+    closed_loop.NAME: ("simulator", "variant:next"),
+}
 
 
 @symbench.hookimpl
 def symbench_evaluators() -> list[EvaluatorEntry]:
-    return [EvaluatorEntry(m.NAME, evaluate=m.evaluate, description=m.DESCRIPTION) for m in MODULES]
+    return [
+        EvaluatorEntry(m.NAME, evaluate=m.evaluate, description=m.DESCRIPTION, needs=NEEDS[m.NAME])
+        for m in MODULES
+    ]
