@@ -6,13 +6,13 @@ import json
 from pathlib import Path
 
 import click
-from rich.console import Console
 from rich.table import Table
 
 from symbench.core.common.cli_types import SEED, WORKERS, CommaList, WritableFolder
+from symbench.core.common.console import StdoutConsole
 from symbench.core.data.presets import PRESETS
 
-console = Console()
+console = StdoutConsole()
 
 
 @click.group("data")

@@ -11,11 +11,11 @@ import time
 from pathlib import Path
 
 import click
-from rich.console import Console
 from rich.markup import escape
 from rich.table import Table
 
 from symbench.core.common.cli_types import EPOCHS, SEED, WORKERS, CommaList, WritableFolder
+from symbench.core.common.console import StdoutConsole
 from symbench.core.data.cli import split_option
 from symbench.core.data.presets import PRESETS
 from symbench.core.runs.results import ResultRecord
@@ -151,7 +151,7 @@ def run(
     assert robot_name is not None
     if evaluators is None:
         evaluators = list(DEFAULT_EVALUATORS if full else FIRST_RESULT_EVALUATORS)
-    console = Console()
+    console = StdoutConsole()
     spec = RunSpec(
         model=model_name,
         robot=robot_name,
