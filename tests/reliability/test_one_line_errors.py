@@ -132,8 +132,8 @@ def test_metadata_missing_a_key_is_named(smoke_hexa, key):
         ),
         (
             lambda m: m.update(trajectories=[{"file": "run0.npz", "scenario": [1]}]),
-            "{path}: trajectories.0.scenario (file run0.npz): Input should be a valid dictionary or "
-            "instance of ScenarioFields",
+            "{path}: trajectories.0.scenario (file run0.npz): Input should be a valid dictionary "
+            "or instance of ScenarioFields",
         ),
     ],
     ids=["Infinity", "NaN", "text for a number", "number for a file", "list for a scenario"],
