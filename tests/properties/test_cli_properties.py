@@ -16,6 +16,7 @@ from hypothesis import strategies as st
 
 from symbench.core.common.errors import SymbenchError
 from symbench.core.common.seeds import SEED_MAX
+from symbench.core.plugin import registry
 
 NUMBERS = (
     st.integers(-(2**70), 2**70).map(str)
@@ -90,13 +91,17 @@ def test_run_values_are_refused_or_handed_on_in_range(values):
             "hexa",
             *(f"{option}={value}" for option, value in values.items()),
         )
+        names = [e.strip() for e in values["--evaluators"].split(",") if e.strip()]
+        unknown = [n for n in names if n not in registry.collect("evaluators")]
+        if unknown and result.exit_code == 1:  # names are checked before the plan is printed
+            assert error_line(result, 1).startswith(f"Error: unknown evaluator '{unknown[0]}'")
+            return
         if not refused_or_reached(result, tuple(values)):
             return
         spec = run.call_args.args[0]
         assert spec.seed == int(values["--seed"]) and 0 <= spec.seed <= SEED_MAX
         assert spec.max_epochs == int(values["--max-epochs"]) >= 1
         assert spec.workers == int(values["--workers"]) >= 1
-        names = [e.strip() for e in values["--evaluators"].split(",") if e.strip()]
         assert list(spec.evaluators) == names and len(set(names)) == len(names) > 0
         assert spec.output.is_dir()  # made, and a folder: nothing in the way
 
@@ -135,6 +140,6 @@ def test_sim_check_numbers_are_refused_or_finite_and_in_range(values):
             *(f"{option}={value}" for option, value in values.items()),
         )
         if refused_or_reached(result, tuple(values)):
-            scenario, control_period = check.call_args.args
+            scenario, control_period, _ = check.call_args.args  # (then the symmetry window)
             assert 0 <= scenario.inclination_deg <= 180 and math.isfinite(scenario.heading_deg)
             assert 0 < scenario.seconds < math.inf and 0 < control_period < math.inf

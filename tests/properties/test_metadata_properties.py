@@ -55,6 +55,18 @@ def refusals(root) -> list[str]:
     ]
 
 
+def values_of(meta: dict, ids: list[int]) -> dict[str, list]:
+    """The distinct values of each scenario column among trajectories `ids`, from the
+    metadata as written (numbers before text, each sorted)."""
+    scenario = {r["id"]: r.get("scenario") or {} for r in meta["trajectories"]}
+    out = {}
+    for column in ("inclination_deg", "heading_deg", "yaw_deg", "direction"):
+        values = {scenario[i].get(column) for i in ids} - {None}
+        if values:
+            out[column] = sorted(values, key=lambda v: (isinstance(v, str), v))
+    return out
+
+
 def check_reading(template, metadata: bytes) -> None:
     """`symbench data info` on the template with `metadata` as its metadata.json: one of the
     refusals above, or exactly what that metadata.json and the files say."""
@@ -84,6 +96,10 @@ def check_reading(template, metadata: bytes) -> None:
             "record_period_s": meta["record_period_s"],
             "size_bytes": sum(f.stat().st_size for f in files.values()),
             "versions": meta["versions"],
+            "provenance": meta.get("provenance", {}),
+            "unknown_columns": meta.get("unknown_columns", []),
+            "import": meta.get("import"),
+            "scenarios": values_of(meta, list(files)),
             "split_seed": 0,
         }
         dataset = load_dataset(DATASET)
@@ -94,10 +110,15 @@ def check_reading(template, metadata: bytes) -> None:
             except SymbenchError as error:  # an edited scenario grid may not support it
                 assert counts == {"error": str(error)}, name
                 continue
+            named = (("train", parts.train), ("val", parts.val), ("test", parts.test))
             assert counts == {
-                part: {"trajectories": len(ids), "samples": sum(steps[i] - 1 for i in ids)}
-                for part, ids in (("train", parts.train), ("val", parts.val), ("test", parts.test))
-            } | {"disjoint": True}, name
+                part: {
+                    "trajectories": len(ids),
+                    "samples": sum(steps[i] - 1 for i in ids),
+                    "scenarios": values_of(meta, ids.tolist()),
+                }
+                for part, ids in named
+            } | {"unused": len(steps) - sum(len(ids) for _, ids in named), "disjoint": True}, name
         try:  # a robot edited into another is refused when the data is used
             assert len(dataset.view("leg_grouped", "acc")) == info["samples"]
         except SymbenchError as error:
