@@ -156,7 +156,9 @@ def _trained(split: str, variant: str) -> TrainedOnSplit:
 
 
 @pytest.mark.parametrize("references", [1, 3])
-def test_closed_loop_tracks_the_presets_references_over_its_horizon(monkeypatch, references):
+def test_closed_loop_tracks_the_presets_references_over_its_horizon(
+    monkeypatch, tmp_path, references
+):
     simulated, tracked = [], []
 
     def simulate(scenario, record_period):
@@ -187,19 +189,29 @@ def test_closed_loop_tracks_the_presets_references_over_its_horizon(monkeypatch,
         spec=SimpleNamespace(
             control=SimpleNamespace(kp=20.0, kd=3.0, timestep=0.001),
             group=SimpleNamespace(rotation_order=1),
+            spec_hash=lambda: "spec",
         ),
+        content_hash="content",
         frames=None,
         trajectory_ids=np.arange(4),
         scenarios=[{"robot": "hexa", "yaw_deg": 10.0 * i} for i in range(4)],
     )
     context = _context(preset, dataset, retrain=_trained, test_trajectories=[3, 2, 1, 0])
+    context.output_dir = tmp_path
     metrics = closed_loop.evaluate(context)
     assert metrics["horizon_s"] == pytest.approx(0.05) and metrics["references"] == references
     assert metrics["pd_fractions"] == [0.0, 0.5] and metrics["pd_gains"] == [10.0, 1.5]
     assert [s.seconds for s in simulated] == [0.05] * references
     assert [s.yaw_deg for s in simulated] == [0.0, 10.0, 20.0][:references]  # in id order
-    # model, oracle and floor at every fraction, for every reference
-    assert tracked == ([(0.0, 0.0)] * 3 + [(10.0, 1.5)] * 3) * references
+    # per reference the oracle once (at the headline fraction) and the floor at every
+    # fraction, then the model at every fraction for every reference
+    calibration = [(10.0, 1.5), (0.0, 0.0), (10.0, 1.5)] * references
+    assert tracked == calibration + [(0.0, 0.0), (10.0, 1.5)] * references
+    # the calibration is kept: a second evaluation tracks the model only
+    simulated.clear()
+    tracked.clear()
+    assert closed_loop.evaluate(context) == metrics
+    assert simulated == [] and tracked == [(0.0, 0.0), (10.0, 1.5)] * references
 
 
 def test_sample_efficiency_trains_on_the_presets_fractions(monkeypatch, tmp_path):

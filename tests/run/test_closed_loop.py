@@ -17,6 +17,7 @@ from symbench.plugins.evaluators.closed_loop import held_out_scenarios
 
 ROBOTS = ("magneto", "hexa", "nona")
 HEADLINE = 0.1  # the preset's headline PD fraction
+FRACTIONS = (0.0, 0.1, 0.3, 1.0)  # the presets' PD fractions
 
 
 def _climb(robot: str, seconds: float, **fields):
@@ -52,11 +53,12 @@ def _assert_replays(scenario, ref, fraction: float) -> None:
 
 
 def test_replaying_the_recorded_torques_is_the_experts_climb(smoke_climb):
-    """The label is what the loop actuates: with no extra feedback (and with the headline
-    PD, which is zero on the reference) the recorded tau gives back the expert's climb."""
+    """The label is what the loop actuates: with no extra feedback, and with the PD at every
+    fraction of the protocol (zero on the reference), the recorded tau gives back the
+    expert's climb. So the oracle row is one replay, reported at every fraction."""
     scenario, ref = smoke_climb
-    _assert_replays(scenario, ref, 0.0)
-    _assert_replays(scenario, ref, HEADLINE)
+    for fraction in FRACTIONS:
+        _assert_replays(scenario, ref, fraction)
 
 
 @pytest.mark.slow
@@ -133,6 +135,58 @@ def test_closed_loop_evaluator_in_a_run(smoke_home, tmp_path):
     assert metrics["expert_success_rate"] == 1.0
     score = metrics["pd_normalized_score"]
     assert score is not None and score < 1.0  # two epochs: nowhere near the oracle
+
+
+def test_the_calibration_is_measured_once_per_output_folder(smoke_home, tmp_path):
+    """Oracle, floor and the expert's references do not depend on the model: a second run
+    in the same folder reads them back (cache keyed by dataset content, references and
+    fractions) and reports the very same metrics."""
+    from symbench.plugins.evaluators.closed_loop import CACHE_DIR
+
+    def closed_loop(model: str) -> dict:
+        spec = RunSpec(
+            model=model,
+            robot="hexa",
+            preset="smoke",
+            evaluators=("closed-loop",),
+            output=tmp_path,
+            progress=False,
+            max_epochs=1,
+        )
+        return run(spec).metrics["closed-loop"]
+
+    first = closed_loop("sdnn")
+    (folder,) = (tmp_path / CACHE_DIR).iterdir()
+    assert (folder / "calibration.json").is_file()
+    stamp = (folder / "calibration.json").stat().st_mtime_ns
+    again = closed_loop("sdnn")
+    assert again == first  # the cached calibration gives the same numbers
+    other = closed_loop("ffnn")
+    assert (folder / "calibration.json").stat().st_mtime_ns == stamp  # read, not measured
+    assert len(list((tmp_path / CACHE_DIR).iterdir())) == 1
+    for key in ("oracle_joint_rmse_rad", "floor_time_to_failure_s", "pd_floor_joint_rmse_rad"):
+        assert other[key] == first[key]
+
+
+@pytest.mark.parametrize("split", ("unseen-heading", "unseen-rotation"))
+def test_closed_loop_on_the_held_out_splits(smoke_home, tmp_path, split):
+    """Every split whose test climbs are held out gets its closed loop (iid: above)."""
+    record = run(
+        RunSpec(
+            model="sdnn",
+            robot="hexa",
+            preset="smoke",
+            split=split,
+            evaluators=("closed-loop",),
+            output=tmp_path,
+            progress=False,
+            max_epochs=1,
+        )
+    )
+    metrics = record.metrics["closed-loop"]
+    assert metrics["references"] >= 1 and metrics["expert_success_rate"] == 1.0
+    assert metrics["pd_oracle_success_rate"] == 1.0
+    assert 0.0 <= metrics["pd_success_rate"] <= 1.0
 
 
 def _dataset(scenarios):

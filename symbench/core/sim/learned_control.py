@@ -49,8 +49,11 @@ from symbench.core.sim.scenario import Scenario
 GRACE_S = 0.1  # s a stance foot may stay off the surface before the climb counts as failed
 LOOKAHEAD_S = 0.006  # s: the record period of the standard datasets (the `next` variant)
 
-# per-sample policy: raw columns of two rows (now, desired ahead) -> torques (n_legs, 3)
+# per-sample policy: raw columns of two rows (now, desired ahead) -> torques (n_legs, 3); the
+# rows are filled in place at every step, valid during the call only (copy what is kept)
 Policy = Callable[[dict[str, np.ndarray]], np.ndarray]
+# the raw columns row 0 takes from the simulation (the others come from the reference)
+MEASURED = ("t", "base_pos", "base_quat", "base_linvel", "base_angvel", "q", "qd", "contact")
 
 
 @dataclass(frozen=True)
@@ -116,53 +119,66 @@ def track(
     normal, height0 = plan.normal, float(plan.base_start @ plan.normal)
     ref_q, ref_qd, ref_qdd = reference["q"], reference["qd"], reference["qdd"]
     stance_ref = reference["magnet"] > 0.5
-    unmeasured = [c for c in reference if c not in ("t", "base_pos", "base_quat")]
+    base_pos_ref = reference["base_pos"]
     errors = np.zeros((n_rows, *ref_q.shape[1:]))
     failure, last, pose = None, -1, np.zeros(7)
     off_steps = np.zeros(spec.n_legs, dtype=int)  # consecutive steps a stance foot is off
     grace = int(round(GRACE_S / dt))
     step_length = spec.gait.step_length
+    # bound once (a MjData attribute read builds a new array object each time)
+    probe, contact_distance = lay.probe(model, data), spec.magnet.contact_distance
+    qpos, qvel, ctrl, xmat = data.qpos, data.qvel, data.ctrl, data.xmat
+    joint_pos, joint_vel, motor, magnet, base_body = (
+        lay.qpos,
+        lay.dof,
+        lay.motor,
+        lay.magnet,
+        lay.base_body,
+    )
+    # the policy's two rows, filled in place at every step (valid during the call only):
+    # row 0 the measured state now (what is not measured, the base acceleration, qdd and
+    # the magnet flags, is the desired motion from the reference), row 1 the desired state
+    # `lookahead` ahead
+    columns = [c for c in (*MEASURED, *reference) if c in reference]
+    rows = {c: np.empty((2, *np.shape(reference[c])[1:])) for c in dict.fromkeys(columns)}
+    unmeasured = [(rows[c], reference[c]) for c in rows if c not in MEASURED]
+    ahead_rows = [(rows[c], reference[c]) for c in rows]
     for k in range(n_rows):
-        t = float(data.time)
-        q, qd = data.qpos[lay.qpos].copy(), data.qvel[lay.dof].copy()
-        contact = physics.contact_flags()
+        t = data.time
+        q, qd = qpos[joint_pos], qvel[joint_vel]
+        contact = probe.sole_distances() < contact_distance
         off_steps = np.where(stance_ref[k] & ~contact, off_steps + 1, 0)
         off_too_long = off_steps > grace  # only these count as stance feet that left
         failure = detachment(
-            off_too_long, ~off_too_long, data, lay.base_body, normal, height0
-        ) or off_path(data.qpos[:3], reference["base_pos"][k], step_length)
+            off_too_long, ~off_too_long, data, base_body, normal, height0
+        ) or off_path(qpos[:3], base_pos_ref[k], step_length)
         if failure is not None:
             break
-        last, pose = k, data.qpos[:7].copy()
+        last, pose = k, qpos[:7].copy()
         errors[k] = q - ref_q[k]
-        # measured state now; what is not measured (base acceleration, qdd, magnets) is the
-        # desired motion from the reference, like the desired state `lookahead` ahead
-        now = {
-            "t": np.array(t),
-            "base_pos": data.qpos[:3].copy(),
-            "base_quat": data.qpos[3:7].copy(),
-            "base_linvel": data.qvel[:3].copy(),
-            "base_angvel": physics.base_angular_velocity(),
-            "q": q,
-            "qd": qd,
-            "contact": contact.astype(np.float64),
-        }
         j = min(k + ahead, n_rows - 1)
-        rows = {
-            c: np.stack([now[c] if c in now else reference[c][k], reference[c][j]])
-            for c in (*now, *unmeasured)
-            if c in reference
-        }
+        for row, column in ahead_rows:
+            row[1] = column[j]
+        for row, column in unmeasured:
+            row[0] = column[k]
+        rows["t"][0] = t
+        rows["base_pos"][0] = qpos[:3]
+        rows["base_quat"][0] = qpos[3:7]
+        rows["base_linvel"][0] = qvel[:3]
+        rows["base_angvel"][0] = xmat[base_body].reshape(3, 3) @ qvel[3:6]  # world frame
+        rows["q"][0] = q
+        rows["qd"][0] = qd
+        rows["contact"][0] = contact
         tau_ff = np.clip(np.asarray(policy(rows), dtype=np.float64), -limit, limit)
         qd_next = ref_qd[k + 1] if k + 1 < n_rows else ref_qd[k] + dt * ref_qdd[k]
-        data.ctrl[lay.motor] = (
+        ctrl[motor] = (
             tau_ff
             + pd_p * (ref_q[k] - q)
             + kp * q
             + pd_d * qd_next
             + (kd - pd_d) * (qd + dt * ref_qdd[k])
         )
-        data.ctrl[lay.magnet] = plan.targets(t).magnet
+        ctrl[magnet] = plan.targets(t).magnet
         mujoco.mj_step2(model, data)
         mujoco.mj_step1(model, data)
     held = float(data.time) if failure is not None else n_rows * dt

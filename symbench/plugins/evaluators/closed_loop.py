@@ -18,6 +18,10 @@ Protocol (`symbench presets` shows its numbers, the preset's `closed_loop` group
   reference). `normalized_score` places the model between floor (0) and oracle (1) on the
   time held, so models compare across robots; `normalized_rmse_score` does the same with
   the joint tracking RMSE (the score at fractions where all three hold the horizon).
+- Cost: only the model rows depend on the model. References, expert success, oracle (one
+  replay, at the headline fraction: it is the same at every fraction) and floor are kept
+  under the output folder (`closed-loop-cache/<key>/`, keyed by dataset content, robot,
+  references and fractions), so the models of a sweep measure them once.
 - Metrics per row and fraction: success rate (held the whole horizon: no fall, no stance
   foot lost, base within half a step of the reference's), time to failure, joint tracking
   RMSE (over the time held), base pose drift (position and orientation error at the last
@@ -34,7 +38,13 @@ fall within about a second, which measures little but the model's bias.
 
 from __future__ import annotations
 
+import hashlib
+import json
 import math
+import os
+import tempfile
+from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 
@@ -50,7 +60,7 @@ ROWS = ("model", "oracle", "floor")
 
 
 def evaluate(context: EvaluationContext) -> dict:
-    from symbench import Scenario, build_view, simulate, track
+    from symbench import build_view, track
 
     trained = context.on_split(context.split, "next")
     frames, entry = context.dataset.frames, context.entry
@@ -63,38 +73,31 @@ def evaluate(context: EvaluationContext) -> dict:
     budget = context.preset.closed_loop
     control = context.robot.control
     fractions = tuple(float(f) for f in budget.pd_fractions)
-    runs: dict[str, dict[float, list]] = {row: {f: [] for f in fractions} for row in ROWS}
     chosen = held_out_scenarios(
         context.dataset,
         context.test_trajectories,
         budget.references,
         context.robot.group.rotation_order,
     )
-    tried, horizons, orbits = 0, [], []
-    for fields in chosen:
-        seconds = min(float(fields.get("seconds", budget.seconds)), budget.seconds)
-        scenario = Scenario.from_dict({**fields, "seconds": seconds})
-        tried += 1
-        # the expert's climb recorded at every physics step: what `track` needs
-        reference = simulate(scenario, record_period=control.timestep)
-        if not reference.attached:  # the expert itself fell: no reference to track
+    # each reference tracked over its climb's length, capped at the preset's horizon
+    scenarios = [
+        {**fields, "seconds": min(float(fields.get("seconds", budget.seconds)), budget.seconds)}
+        for fields in chosen
+    ]
+    calibration = _calibration(context, scenarios, fractions, float(budget.headline_pd))
+    runs: dict[str, dict[float, list]] = {row: {f: [] for f in fractions} for row in ROWS}
+    tried, horizons, orbits = len(scenarios), [], []
+    for fields, measured in zip(scenarios, calibration, strict=True):
+        if measured is None:  # the expert itself fell: no reference to track
             continue
-        ref = reference.arrays
-        horizons.append(seconds)
+        scenario, ref, oracle, floor = measured
+        horizons.append(float(fields["seconds"]))
         orbits.append(_describe(fields))
-        dt = float(ref["t"][1] - ref["t"][0])
-
-        def oracle(rows: dict[str, np.ndarray], ref=ref, dt=dt) -> np.ndarray:
-            return ref["tau"][int(round(float(rows["t"][0]) / dt))]
-
-        def floor(rows: dict[str, np.ndarray], ref=ref) -> np.ndarray:
-            return np.zeros_like(ref["tau"][0])
-
-        policies = {"model": model, "oracle": oracle, "floor": floor}
         for f in fractions:
             gains = (f * control.kp, f * control.kd)
-            for row in ROWS:
-                runs[row][f].append(track(scenario, ref, policies[row], gains))
+            runs["model"][f].append(track(scenario, ref, model, gains))
+            runs["oracle"][f].append(oracle)
+            runs["floor"][f].append(floor[f])
     headline = float(budget.headline_pd)
     out: dict = {
         "references": len(horizons),
@@ -122,6 +125,125 @@ def evaluate(context: EvaluationContext) -> dict:
         for row in ("oracle", "floor"):
             out.update({f"{prefix}{row}_{k}": v for k, v in part[row].items() if k != "failures"})
     return out
+
+
+CACHE_DIR = "closed-loop-cache"  # under the run's output folder
+CACHE_VERSION = 1  # bump when what is cached, or how it is measured, changes
+
+
+def _calibration(
+    context: EvaluationContext,
+    scenarios: list[dict],
+    fractions: tuple[float, ...],
+    oracle_pd: float,
+) -> list:
+    """Per reference scenario: None when the expert fell, else (scenario, reference, oracle,
+    floor by fraction). None of it depends on the model, so it is measured once per
+    (dataset content, robot, references, fractions) and kept under the output folder: a
+    sweep pays it once. The oracle runs once, at `oracle_pd`: on the reference the PD and
+    the residual vanish, so the applied torque is the recorded one at every fraction (the
+    tests pin the replay at each)."""
+    from symbench import Scenario, __version__, simulate
+
+    control = context.robot.control
+    key = {
+        "cache_version": CACHE_VERSION,
+        "symbench": __version__,
+        "dataset_content_hash": context.dataset.content_hash,
+        "robot_spec_hash": context.robot.spec_hash(),
+        "scenarios": scenarios,
+        "pd_fractions": list(fractions),
+        "oracle_pd_fraction": oracle_pd,
+        "servo_gains": [control.kp, control.kd],
+    }
+    text = json.dumps(key, sort_keys=True, separators=(",", ":"))
+    folder = Path(context.output_dir) / CACHE_DIR / hashlib.sha256(text.encode()).hexdigest()[:20]
+    cached = _read_calibration(folder, key, fractions)
+    if cached is not None:
+        return cached
+    from symbench import track
+
+    out: list = []
+    for fields in scenarios:
+        scenario = Scenario.from_dict(fields)
+        # the expert's climb recorded at every physics step: what `track` needs
+        reference = simulate(scenario, record_period=control.timestep)
+        if not reference.attached:
+            out.append(None)
+            continue
+        ref = reference.arrays
+        dt = float(ref["t"][1] - ref["t"][0])
+
+        def oracle(rows: dict[str, np.ndarray], ref=ref, dt=dt) -> np.ndarray:
+            return ref["tau"][int(round(float(rows["t"][0]) / dt))]
+
+        def floor(rows: dict[str, np.ndarray], ref=ref) -> np.ndarray:
+            return np.zeros_like(ref["tau"][0])
+
+        def gains(f: float) -> tuple[float, float]:
+            return f * control.kp, f * control.kd
+
+        replay = track(scenario, ref, oracle, gains(oracle_pd))
+        floors = {f: track(scenario, ref, floor, gains(f)) for f in fractions}
+        out.append((scenario, ref, replay, floors))
+    _write_calibration(folder, key, out)
+    return out
+
+
+def _write_atomic(path: Path, write) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    try:
+        with os.fdopen(fd, "wb") as handle:
+            write(handle)
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+
+
+def _write_calibration(folder: Path, key: dict, measured: list) -> None:
+    """References as .npz (exact float64), then calibration.json last: its presence means
+    the folder is complete."""
+    rows: list = []
+    for i, item in enumerate(measured):
+        if item is None:
+            rows.append(None)
+            continue
+        _, ref, oracle, floors = item
+        _write_atomic(folder / f"reference-{i}.npz", lambda h, ref=ref: np.savez(h, **ref))
+        rows.append(
+            {
+                "oracle": dict(vars(oracle)),
+                "floor": [[f, dict(vars(r))] for f, r in floors.items()],
+            }
+        )
+    body = json.dumps({"key": key, "references": rows}, indent=1).encode()
+    _write_atomic(folder / "calibration.json", lambda h: h.write(body))
+
+
+def _read_calibration(folder: Path, key: dict, fractions: tuple[float, ...]) -> list | None:
+    """The cached calibration when it is complete and of this very key, else None."""
+    from symbench import Scenario
+
+    try:
+        data = json.loads((folder / "calibration.json").read_text())
+        if data["key"] != json.loads(json.dumps(key)):
+            return None
+        out: list = []
+        for i, (fields, row) in enumerate(zip(key["scenarios"], data["references"], strict=True)):
+            if row is None:
+                out.append(None)
+                continue
+            with np.load(folder / f"reference-{i}.npz", allow_pickle=False) as npz:
+                ref = {k: npz[k] for k in npz.files}
+            floors = {float(f): SimpleNamespace(**r) for f, r in row["floor"]}
+            if tuple(floors) != fractions:
+                return None
+            out.append((Scenario.from_dict(fields), ref, SimpleNamespace(**row["oracle"]), floors))
+        return out
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
 
 
 def held_out_scenarios(dataset, test_ids: np.ndarray, n: int, rotation_order: int = 1) -> list:
