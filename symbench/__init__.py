@@ -12,7 +12,8 @@ Building models
     ModelDims, ViewArrays, LegGroup, act, schema
 Writing evaluators
     EvaluationContext, TrainedOnSplit, rmse, relative_error, act_on_raw,
-    rotate_scene_about_gravity, Scenario, simulate, track, build_view, sample_efficiency_png
+    rotate_scene_about_gravity, rotate_scene, Scenario, simulate, track, build_view,
+    sample_efficiency_png
 Writing splits
     SplitContext, carve_validation
 Reading a preset's sizes, budgets and horizons (`symbench presets`)
@@ -59,6 +60,7 @@ _PUBLIC: dict[str, str] = {
     "relative_error": "symbench.core.runs.evaluation:relative_error",
     "act_on_raw": "symbench.core.data.raw_action:act_on_raw",
     "rotate_scene_about_gravity": "symbench.core.data.raw_action:rotate_scene_about_gravity",
+    "rotate_scene": "symbench.core.data.raw_action:rotate_scene",
     "Scenario": "symbench.core.sim.scenario:Scenario",
     "simulate": "symbench.core.sim.rollout:simulate",
     "track": "symbench.core.sim.learned_control:track",
@@ -108,6 +110,7 @@ __all__ = [
     "preset",
     "relative_error",
     "rmse",
+    "rotate_scene",
     "rotate_scene_about_gravity",
     "sample_efficiency_png",
     "schema",
@@ -142,7 +145,11 @@ if TYPE_CHECKING:  # what type checkers and editors see
     from symbench.core.data import schema
     from symbench.core.data.model_dims import ModelDims
     from symbench.core.data.presets import PRESETS, Preset, preset
-    from symbench.core.data.raw_action import act_on_raw, rotate_scene_about_gravity
+    from symbench.core.data.raw_action import (
+        act_on_raw,
+        rotate_scene,
+        rotate_scene_about_gravity,
+    )
     from symbench.core.data.splits import SplitContext, carve_validation
     from symbench.core.data.views import build_view
     from symbench.core.plugin.entries import (

@@ -12,7 +12,7 @@ from symbench.core.common.console import StdoutConsole
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import BACKENDS
 from symbench.testing.equivariance import EquivarianceReport, check_model
-from symbench.testing.groups import robot_group
+from symbench.testing.model_group import measure_symmetry_group
 
 
 @click.command("check-equivariance")
@@ -35,6 +35,12 @@ from symbench.testing.groups import robot_group
 @click.option(
     "--seed", default=0, show_default=True, type=SEED, help="Seed of parameters and inputs."
 )
+@click.option(
+    "--group-of-model",
+    is_flag=True,
+    help="Also measure the model's own symmetry group (the leg permutations it is "
+    "equivariant to) against the robot's.",
+)
 @click.option("--json", "as_json", is_flag=True, help="Print JSON instead of tables.")
 @click.pass_context
 def check_equivariance(
@@ -44,25 +50,37 @@ def check_equivariance(
     backend: str,
     samples: int,
     seed: int,
+    group_of_model: bool,
     as_json: bool,
 ) -> None:
-    """Max relative error of f(g.x) vs g.f(x) per group element, float64 and float32.
+    """Max relative error of f(g.x) vs g.f(x) per group element, float64 and float32, with
+    g acting on raw states (base turned, legs relabelled) and the model's view recomputed.
 
-    Exits non-zero when a model that claims equivariance breaks it; a model that claims
-    none is reported as not equivariant, which is not a failure.
+    Known-wrong transformations run as controls and must fail. Exits non-zero when a model
+    that claims equivariance breaks it; a model that claims none gets its measured error,
+    which is not a failure.
     """
-    group = robot_group(robot_name)
     if backend == "all":
         entries = [e for e in registry.collect("models").values() if e.name == model_name]
         entries = entries or [registry.model(model_name)]  # raises, naming the closest models
     else:
         entries = [registry.model(model_name, backend)]
-    reports = [check_model(e, group, n_samples=samples, seed=seed) for e in entries]
+    reports = [check_model(e, robot_name, n_samples=samples, seed=seed) for e in entries]
+    groups = [measure_symmetry_group(e, robot_name, seed=seed) for e in entries]
+    groups = groups if group_of_model else []
     if as_json:
-        click.echo(json.dumps([r.to_dict() for r in reports], indent=2))
+        dicts = [r.to_dict() for r in reports]
+        for d, g in zip(dicts, groups, strict=False):
+            d["symmetry_group"] = g.to_dict()
+        click.echo(json.dumps(dicts, indent=2))
     else:
         for r in reports:
             _print(r)
+        for g in groups:
+            StdoutConsole().print(
+                f"{g.model}/{g.backend} symmetry group ({len(g.tested)} permutations tested, "
+                f"{g.view} view relabelled): {g.verdict}"
+            )
     if not all(r.passed for r in reports):
         ctx.exit(1)
 
@@ -91,3 +109,15 @@ def _print(report: EquivarianceReport) -> None:
         ]
         table.add_row(e.element, str(e.perm), *cells)
     console.print(table)
+    controls = Table(
+        title="controls (known-wrong transformations: must fail)", title_justify="left"
+    )
+    for col in ("control", "as element", *report.tolerances, "result"):
+        controls.add_column(col)
+    for c in report.controls:
+        result = "fails, as it must" if c.failed(report.tolerances) else "[red]PASSES[/]"
+        controls.add_row(
+            c.control, c.element, *(f"{c.errors[d]:.2e}" for d in report.tolerances), result
+        )
+    if report.controls:
+        console.print(controls)

@@ -7,7 +7,9 @@
     def test_one_robot_at_a_time(symbench_kit, symbench_robot, symbench_group):
         symbench_kit.assert_equivariant(my_entry, symbench_group)  # one test per robot
 
-`--symbench-samples N` sets the number of random inputs per group element. Importing this
+`group` may be a `LegGroup` (checked on a regular robot with that many legs) or a registered
+robot's name, e.g. `symbench_robot` (its own group and leg frames). `--symbench-samples N`
+sets the number of raw states per group element. Importing this
 module imports neither torch nor JAX.
 """
 
@@ -26,15 +28,20 @@ from symbench.core.symmetry.groups import LegGroup
 class Kit:
     n_samples: int
 
-    def check(self, entry: ModelEntry, group: LegGroup, **kwargs: Any):
+    def check(self, entry: ModelEntry, group: LegGroup | str, **kwargs: Any):
         from symbench.testing.equivariance import check_model
 
         return check_model(entry, group, **{"n_samples": self.n_samples, **kwargs})
 
-    def assert_equivariant(self, entry: ModelEntry, group: LegGroup, **kwargs: Any):
+    def assert_equivariant(self, entry: ModelEntry, group: LegGroup | str, **kwargs: Any):
         from symbench.testing.equivariance import assert_equivariant
 
         return assert_equivariant(entry, group, **{"n_samples": self.n_samples, **kwargs})
+
+    def symmetry_group(self, entry: ModelEntry, group: LegGroup | str, **kwargs: Any):
+        from symbench.testing.model_group import measure_symmetry_group
+
+        return measure_symmetry_group(entry, group, **kwargs)
 
 
 def pytest_addoption(parser: pytest.Parser) -> None:

@@ -29,14 +29,17 @@ def test_sdnn_passes_in_both_backends_as_json():
 def test_non_claiming_model_is_reported_without_failing():
     result = invoke("--model", "ffnn-leg", "--robot", "hexa", "--backend", "torch")
     assert result.exit_code == 0, result.output
-    title, *table = result.output.splitlines()
-    assert title.strip() == "ffnn-leg/torch on C6 (6 legs): not equivariant (claims none)"
+    title, *lines = result.output.splitlines()
+    assert title.startswith("ffnn-leg/torch on C6 (6 legs): not equivariant (claims none): ")
+    assert "measured max error" in " ".join(result.output.split())
+    table = lines[: next(i for i, line in enumerate(lines) if line.startswith("controls"))]
     rows = [[cell.strip() for cell in line.split("│")[1:-1]] for line in table]
     rows = [row for row in rows if row]
     assert [row[0] for row in rows] == ["identity", *(f"shift {k}" for k in range(1, 6))]
-    assert rows[0][1:] == ["(0, 1, 2, 3, 4, 5)", "0.00e+00", "0.00e+00"]
+    assert rows[0][1] == "(0, 1, 2, 3, 4, 5)" and float(rows[0][2]) < 1e-14
     assert rows[5][1] == "(5, 0, 1, 2, 3, 4)"
     assert all(float(error) > 1e-3 for row in rows[1:] for error in row[2:])  # measured
+    assert " ".join(result.output.split()).count("fails, as it must") == 14  # a half turn: 2
 
 
 def test_unknown_model_names_the_closest():
@@ -62,4 +65,25 @@ def test_broken_claim_exits_non_zero(host_with_broken_model):
     assert result.exit_code == 1, result.output
     assert result.output.splitlines()[0].strip() == (
         "broken-sdnn/torch on C6 (6 legs): BROKEN: claims equivariance and breaks it"
+    )
+
+
+def test_json_has_the_controls_and_the_model_group():
+    result = invoke(
+        "--model", "sdnn", "--robot", "hexa", "--backend", "torch", "--group-of-model", "--json"
+    )
+    assert result.exit_code == 0, result.output
+    (report,) = json.loads(result.output)
+    assert report["equivariant"] and len(report["controls"]) == 14
+    assert all(c["failed_as_it_must"] and c["float64"] > 1e-3 for c in report["controls"])
+    group = report["symmetry_group"]
+    assert group["measured_order"] == 720 and group["over_constrained"] and group["legs_alike"]
+
+
+def test_the_model_group_is_printed():
+    result = invoke("--model", "ffnn", "--robot", "magneto", "--backend", "jax", "--group-of-model")
+    assert result.exit_code == 0, result.output
+    assert " ".join(result.output.split()).endswith(
+        "ffnn/jax symmetry group (24 permutations tested, vector view relabelled): "
+        "trivial: the identity only; breaks the robot group C2 (order 2)"
     )

@@ -10,11 +10,13 @@ under the element is refused instead of silently giving wrong numbers.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
+from typing import Any
 
 import numpy as np
 
-from symbench.core.data.frames import LegFrames, quat_multiply, yaw_matrix, yaw_quat
+from symbench.core.common.errors import SymbenchError
+from symbench.core.data.frames import LegFrames, quat_multiply, quat_to_matrix, yaw_quat
 from symbench.core.data.schema import FeatureType
 from symbench.core.symmetry import legs as leg_symmetry
 from symbench.core.symmetry.groups import GroupElement
@@ -35,18 +37,11 @@ def act_on_raw(
 ) -> dict[str, np.ndarray]:
     """g . raw for raw columns shaped (T, ...) (see symbench.core.sim.raw), float64."""
     gb = base_map(frames, g)
-    src = g.source_legs()
-    out = {k: np.array(v, copy=True) for k, v in raw.items()}
     joint_signs = np.asarray(FeatureType.JOINT.reflection_signs) if g.reflect else np.ones(3)
-    for name in JOINT_COLUMNS:
-        out[name] = np.asarray(raw[name], np.float64)[:, src, :] * joint_signs
-    for name in FLAG_COLUMNS:
-        out[name] = np.asarray(raw[name])[:, src]
-    quat = np.asarray(raw["base_quat"], np.float64)
+    out = relabel_legs(raw, g.source_legs(), joint_signs)
     if not g.reflect:
-        angle = np.arctan2(gb[1, 0], gb[0, 0])
-        out["base_quat"] = quat_multiply(quat, yaw_quat(-angle))
-        return out
+        return turn_base(out, -rotation_angle(frames, g))
+    quat = np.asarray(raw["base_quat"], np.float64)
     angle = np.arctan2(*(gb @ MIRROR_Y)[[1, 0], 0])
     turned = quat_multiply(quat, yaw_quat(angle))
     out["base_quat"] = turned * np.array([1.0, -1.0, 1.0, -1.0])  # conjugated by the mirror
@@ -60,9 +55,51 @@ def rotate_scene_about_gravity(
     raw: Mapping[str, np.ndarray], angle: float
 ) -> dict[str, np.ndarray]:
     """The same motion with the whole scene turned by `angle` (rad) about world z."""
-    rz = yaw_matrix(angle)
+    return rotate_scene(raw, angle, (0.0, 0.0, 1.0))
+
+
+def rotate_scene(
+    raw: Mapping[str, np.ndarray], angle: float, axis: Sequence[float]
+) -> dict[str, np.ndarray]:
+    """The robot's states turned by `angle` (rad) about the world `axis` through the origin;
+    gravity is not turned. About world z this is a symmetry of the physics; about any other
+    axis it tilts the robot against gravity (a change a model's torques must show)."""
+    unit = np.asarray(axis, np.float64) / np.linalg.norm(axis)
+    quat = np.concatenate([[np.cos(angle / 2)], np.sin(angle / 2) * unit])
+    rot = quat_to_matrix(quat)
     out = {k: np.array(v, copy=True) for k, v in raw.items()}
     for name in (*WORLD_VECTORS, "base_angvel"):
-        out[name] = np.asarray(raw[name], np.float64) @ rz.T
-    out["base_quat"] = quat_multiply(yaw_quat(angle), np.asarray(raw["base_quat"], np.float64))
+        out[name] = np.asarray(raw[name], np.float64) @ rot.T
+    out["base_quat"] = quat_multiply(quat, np.asarray(raw["base_quat"], np.float64))
+    return out
+
+
+def rotation_angle(frames: LegFrames, g: GroupElement) -> float:
+    """The angle (rad) about the base z that carries each leg i onto leg perm[i], for a
+    rotation element (refused when the robot lacks that symmetry)."""
+    if g.reflect:
+        raise SymbenchError(f"{g.name} is a reflection, not a rotation about the base normal")
+    gb = base_map(frames, g)
+    return float(np.arctan2(gb[1, 0], gb[0, 0]))
+
+
+def relabel_legs(
+    raw: Mapping[str, np.ndarray], source_legs: Any, joint_signs: Any = 1.0
+) -> dict[str, np.ndarray]:
+    """Per-leg columns relabelled, new leg j = old leg source_legs[j] (joint columns times
+    `joint_signs`); the base is left as it is."""
+    src = np.asarray(source_legs, dtype=np.int64)
+    out = {k: np.array(v, copy=True) for k, v in raw.items()}
+    for name in JOINT_COLUMNS:
+        out[name] = np.asarray(raw[name], np.float64)[:, src, :] * joint_signs
+    for name in FLAG_COLUMNS:
+        out[name] = np.asarray(raw[name])[:, src]
+    return out
+
+
+def turn_base(raw: Mapping[str, np.ndarray], angle: float) -> dict[str, np.ndarray]:
+    """The base turned by `angle` (rad) about its own z (the surface normal when it stands
+    on the surface); nothing else changes."""
+    out = {k: np.array(v, copy=True) for k, v in raw.items()}
+    out["base_quat"] = quat_multiply(np.asarray(raw["base_quat"], np.float64), yaw_quat(angle))
     return out
