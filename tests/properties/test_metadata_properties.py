@@ -39,7 +39,7 @@ def refusals(root) -> list[str]:
     """Every message symbench gives for a bad metadata.json (whole messages, as patterns):
     each names the dataset or its metadata file first, and says what is wrong."""
     dataset, path = re.escape(f"dataset '{DATASET}'"), re.escape(str(root / METADATA))
-    repair = r"(\S.*|None)"  # the repair command the (edited) metadata holds
+    repair = r"\S.*"  # the repair command the (edited) metadata holds, or the generic one
     return [
         rf"{dataset}: {path}: not valid JSON \(.+\)",
         rf"{path} is not a symbench dataset's metadata",
@@ -52,6 +52,8 @@ def refusals(root) -> list[str]:
         rf"{dataset}: trajectories/.+ holds \d+ steps, metadata.json says -?\d+; "
         rf"fix it with: {repair}",
         rf"{dataset} has no trajectories \(\d+ failed\)",
+        rf"{dataset}: {path} names dataset '.*' \(a folder copied or renamed by hand\); "
+        rf"rebuild it with: {repair}",
     ]
 
 

@@ -94,8 +94,9 @@ class Dataset:
     def view(self, view: str = "leg_grouped", variant: str = "acc") -> ViewArrays:
         """Every sample of the dataset in `view` ("leg_grouped", "vector", "body_graph")."""
         require_known(self.metadata, view)
+        frames = self.frames  # a dataset of another robot is refused before its files are read
         raw, ids = self.raw()
-        return build_view(raw, ids, self.frames, view, variant)
+        return build_view(raw, ids, frames, view, variant)
 
     def split_context(self, seed: int) -> SplitContext:
         return SplitContext(

@@ -84,14 +84,14 @@ def read_metadata(dataset_id: str, missing_hint: str) -> tuple[Path, dict[str, A
     if meta.get("format_version") != FORMAT_VERSION:
         raise SymbenchError(
             f"dataset '{dataset_id}' has format version {meta.get('format_version')},"
-            f" this symbench reads {FORMAT_VERSION}; {meta.get('repair_command')}"
+            f" this symbench reads {FORMAT_VERSION}; {_repair(meta)}"
         )
     if meta.get("content_hash") != content_hash(meta) and not (
         meta.get("source") == "imported" and meta.get("content_hash") == _legacy_hash(meta)
     ):
         raise SymbenchError(
             f"dataset '{dataset_id}': metadata.json was edited or damaged "
-            f"(content hash mismatch); rebuild it with: {meta.get('repair_command')}"
+            f"(content hash mismatch); rebuild it with: {_repair(meta)}"
         )
     try:
         DatasetMetadata.model_validate(meta)
@@ -100,9 +100,17 @@ def read_metadata(dataset_id: str, missing_hint: str) -> tuple[Path, dict[str, A
     if meta["id"] != dataset_id:  # an imported dataset's id is not hashed: it must match
         raise SymbenchError(
             f"dataset '{dataset_id}': {root / METADATA} names dataset '{meta['id']}' (a "
-            f"folder copied or renamed by hand); rebuild it with: {meta['repair_command']}"
+            f"folder copied or renamed by hand); rebuild it with: {_repair(meta)}"
         )
     return root, meta
+
+
+def _repair(meta: dict[str, Any]) -> str:
+    """The dataset's own repair command, or a generic one where an edit left it blank."""
+    command = meta.get("repair_command")
+    if isinstance(command, str) and command.strip():
+        return command
+    return "delete the dataset's folder and generate or import it again"
 
 
 def damaged_files(root: Path, meta: dict[str, Any]) -> list[str]:
@@ -123,7 +131,7 @@ def verify(root: Path, meta: dict[str, Any]) -> None:
         shown = ", ".join(bad[:3]) + (f" and {len(bad) - 3} more" if len(bad) > 3 else "")
         raise SymbenchError(
             f"dataset '{meta['id']}': {shown} changed, truncated or missing "
-            f"(SHA-256 mismatch); fix it with: {meta['repair_command']}"
+            f"(SHA-256 mismatch); fix it with: {_repair(meta)}"
         )
     for rec in meta["trajectories"]:
         steps = step_count(root / rec["file"])
@@ -131,5 +139,5 @@ def verify(root: Path, meta: dict[str, Any]) -> None:
             raise SymbenchError(
                 f"dataset '{meta['id']}': {rec['file']} holds {steps} steps, "
                 f"metadata.json says {rec['n_steps']}; fix it with: "
-                f"{meta['repair_command']}"
+                f"{_repair(meta)}"
             )
