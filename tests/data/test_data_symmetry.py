@@ -1,9 +1,9 @@
 """`symbench data symmetry`: image pairs compared after relabelling, against a noise floor.
 
-A generated dataset is symmetric to float precision; the same data with one leg's torques
-10 % larger (what a heavier leg's recorded torques look like; robot.toml has one mass per
-link for every leg, so an asymmetric robot cannot be specified, and the recorded data are
-perturbed instead) shows a gap far above the floor.
+A generated dataset is symmetric to float precision; data with one leg's torques 10 % larger
+shows a gap far above the floor, and so do climbs simulated with a robot whose leg 0 really
+is 10 % heavier (robot.toml has one set of link masses for every leg, so the test scales
+leg 0's links in the MuJoCo model it builds).
 """
 
 from __future__ import annotations
@@ -163,3 +163,43 @@ def test_cli_names_a_dataset_without_pairs(smoke_home, tmp_path):
     import_logs(folder, "one-log")
     line = error_line(invoke("data", "symmetry", "one-log"), 1)
     assert "dataset 'one-log' has no pair of trajectories that are images" in line
+
+
+def _simulated_climbs(monkeypatch, heavier: float):
+    """hexa on a wall at yaws 0 and 180 degrees (images under the half turn), 0.4 s each,
+    simulated with leg 0's links (mass and inertia) `heavier` times their spec's."""
+    import symbench.core.sim.model as model
+    from symbench.core.sim.rollout import simulate
+    from symbench.core.sim.scenario import Scenario
+
+    inertial = model._inertial
+
+    def scaled(body, mass, inertia, com=(0.0, 0.0, 0.0)):
+        factor = heavier if body.name.startswith("leg0_") else 1.0
+        inertial(body, mass * factor, [i * factor for i in inertia], com)
+
+    monkeypatch.setattr(model, "_inertial", scaled)
+    scenarios = [
+        Scenario("hexa", 90.0, 0.0, yaw, "forward", None, 0, 0.4).to_dict() for yaw in (0.0, 180.0)
+    ]
+    trajectories = {k: simulate(Scenario.from_dict(s)).arrays for k, s in enumerate(scenarios)}
+    return trajectories, tuple(scenarios)
+
+
+def test_a_simulated_robot_with_a_heavier_leg_is_measurably_asymmetric(monkeypatch):
+    """Not perturbed data: the physics of a robot whose leg 0 is 10 % heavier."""
+    spec = load_robot("hexa")
+    frames = LegFrames.from_spec(spec)
+    verdicts = {}
+    for heavier in (1.0, HEAVIER):
+        trajectories, scenarios = _simulated_climbs(monkeypatch, heavier)
+        report = measure(trajectories, scenarios, spec.group, frames, "sim", "hexa")
+        assert len(report.pairs) == 1
+        verdicts[heavier] = {g: row["verdict"] for g, row in report.groups.items()}
+        ratios = [row["ratio"] for row in report.groups.values()]
+        if heavier == 1.0:
+            assert all(row["relative_error"] < 1e-9 for row in report.groups.values())
+        else:
+            assert min(ratios) > 10  # every group, the torques most of all
+    assert set(verdicts[1.0].values()) == {"exact (float precision)"}
+    assert all(v.startswith("asymmetric") for v in verdicts[HEAVIER].values())
