@@ -29,6 +29,16 @@ BUDGETS = {
     "smoke": {"max_epochs": 3, "horizon_s": 1.0, "references": 2, "grid_seconds": 1.0},
     "small": {"max_epochs": 60, "horizon_s": 2.6, "references": 6, "grid_seconds": 2.6},
     "paper": {"max_epochs": 500, "horizon_s": 10.0, "references": 8, "grid_seconds": 10.0},
+    "smoke-noisy": {"max_epochs": 3, "horizon_s": 1.0, "references": 2, "grid_seconds": 1.0},
+    "small-noisy": {"max_epochs": 60, "horizon_s": 2.6, "references": 6, "grid_seconds": 2.6},
+}
+# the closed loop trains on these presets' datasets (data for control)
+TRAIN_PRESETS = {
+    "smoke": "smoke-noisy",
+    "small": "small-noisy",
+    "paper": None,
+    "smoke-noisy": "smoke-noisy",
+    "small-noisy": "small-noisy",
 }
 # What the dataset metadata stores (and so its content hash covers), in this order.
 GRID_KEYS = [
@@ -60,6 +70,7 @@ def test_the_budgets_are_those_of_the_published_board():
             references=budget["references"],
             pd_fractions=(0.0, 0.1, 0.3, 1.0),
             headline_pd=0.1,
+            train_preset=TRAIN_PRESETS[name],
         )
         assert p.closed_loop.seconds == p.dataset.seconds  # the horizon: a whole climb
         assert p.dataset.seconds == budget["grid_seconds"]
@@ -70,7 +81,8 @@ def test_the_budgets_are_those_of_the_published_board():
 def test_the_stored_grid_holds_the_grid_and_no_budget():
     for p in PRESETS.values():
         grid = p.grid(3)
-        assert list(grid) == GRID_KEYS
+        noisy = ["torque_noise"] if p.dataset.torque_noise else []  # only when there is noise
+        assert list(grid) == [*GRID_KEYS[:-1], *noisy, GRID_KEYS[-1]]
         assert (grid["name"], grid["description"]) == (p.name, p.description)
         assert grid["yaws_deg"] == list(p.dataset.yaws_deg(3))
     assert PRESETS["small"].grid(6)["yaws_deg"] == [30.0 * k for k in range(12)]
@@ -90,13 +102,14 @@ def test_presets_json_is_every_preset_with_every_number():
         "references": 2,
         "pd_fractions": [0.0, 0.1, 0.3, 1.0],
         "headline_pd": 0.1,
+        "train_preset": "smoke-noisy",
     }
     assert shown["small"]["sample_efficiency"] == {"fractions": [0.1, 0.25, 0.5, 0.75]}
     assert shown["paper"]["dataset"]["inclinations_deg"] == [57.29577951308232, 90.0]
 
 
 def test_presets_table_has_a_row_per_number(monkeypatch):
-    monkeypatch.setenv("COLUMNS", "200")  # no wrapped cells
+    monkeypatch.setenv("COLUMNS", "400")  # no wrapped cells
     result = invoke("presets")
     assert result.exit_code == 0, result.output
     lines = result.stdout.splitlines()
@@ -108,6 +121,7 @@ def test_presets_table_has_a_row_per_number(monkeypatch):
             row = re.compile(r"│\s*" + r"\s*│\s*".join(map(re.escape, [setting, *cells])) + r"\s*│")
             assert any(row.search(line) for line in lines), (section, setting, cells)
     assert "57.2958" in result.stdout and "forward, backward, left, right" in result.stdout
+    assert "small-noisy" in lines[2]
 
 
 def test_a_wrong_presets_command_line_is_one_line():

@@ -121,6 +121,10 @@ def test_closed_loop_evaluator_in_a_run(smoke_home, tmp_path):
         )
     )
     metrics = record.metrics["closed-loop"]
+    # trained on the noisy variant of the standard dataset (made when missing), saying so
+    assert metrics["trained_on"] == "hexa-climb-smoke-noisy-v4"
+    folders = list((tmp_path / "checkpoints").glob("*/*/hexa-climb-smoke-noisy-v4-*/iid__next"))
+    assert len(folders) == 1
     assert metrics["references"] >= 1 and metrics["horizon_s"] == 1.0  # the climb's length
     assert metrics["pd_fractions"] == [0.0, 0.1, 0.3, 1.0]
     assert metrics["headline_pd_fraction"] == HEADLINE

@@ -27,6 +27,12 @@ CONTENT_HASHES = {
     "magneto-climb-small-v4": "9b2ad83546142423df94ff3d1da1221474b772fe43fed7d59d8d8ea35f2389b9",
     "hexa-climb-small-v4": "e5530304f669b3f1fa51373773f6102368903049474cbcf168ca59e747a8ed08",
     "nona-climb-small-v4": "5526a212002c0e6eabb4afda15547911442a4b93dd272b532342dda98dd02c3c",
+    # data for control: smoke's grid with torque noise (its draws seeded by each scenario)
+    "magneto-climb-smoke-noisy-v4": (
+        "03b2b28754b210e278a74e2981246bad54c5624392bdd19fab3f7ec58cc52020"
+    ),
+    "hexa-climb-smoke-noisy-v4": "6905ca397476d2e4a51b71b974c2bd2e55d223b7122487490ad4c9726d8d42c7",
+    "nona-climb-smoke-noisy-v4": "c0d265821be97d80a9667553d183b2a875bd3cdf839dcd2dfe0e0723e367c37b",
 }
 
 

@@ -25,6 +25,8 @@ class ScenarioFields(BaseModel):
     leg_order: list[Annotated[int, Field(ge=0)]] | None = None
     seed: Annotated[int, Field(ge=0)] | None = None
     seconds: Annotated[float, Field(gt=0, allow_inf_nan=False)] | None = None
+    # N m, only in data for control (a noisy preset): absent means none
+    torque_noise: Annotated[float, Field(ge=0, allow_inf_nan=False)] | None = None
 
 
 class StoredScenario(ScenarioFields):

@@ -23,7 +23,7 @@ import numpy as np
 
 from symbench.core.common.arrays import ViewArrays
 from symbench.core.common.errors import SymbenchError
-from symbench.core.data.presets import RECORD_PERIOD, Preset
+from symbench.core.data.presets import RECORD_PERIOD, Preset, dataset_id, parse_dataset_id, preset
 from symbench.core.data.scenario_fields import SCENARIO_KEYS
 from symbench.core.plugin.entries import EvaluatorEntry, ModelEntry
 from symbench.core.plugin.registry import evaluator
@@ -41,8 +41,8 @@ NEED_TEXT = {
 }
 PERIOD_TOLERANCE = 0.05  # relative: a record period this close to RECORD_PERIOD is the same
 # The scenario fields that make a scenario complete, enough for a simulator replay (a
-# missing leg order means the default one).
-REPLAY_FIELDS = tuple(k for k in SCENARIO_KEYS if k != "leg_order")
+# missing leg order means the default one, a missing torque noise none).
+REPLAY_FIELDS = tuple(k for k in SCENARIO_KEYS if k not in ("leg_order", "torque_noise"))
 RAW_COLUMNS = ("base_pos", "base_quat", "base_linvel", "base_angvel", "base_linacc", "q", "qd")
 
 
@@ -62,6 +62,9 @@ class EvaluationContext:
 
     `retrain(split, variant)` trains the same architecture on another split or input variant
     (the closed-loop evaluator needs the `next` variant); results are cached per pair.
+    `retrain_on(dataset_id, split, variant)` does the same on another dataset of the robot
+    (the closed loop's data for control, `control_dataset`), with the same split, seed and
+    training configuration, never on this run's test trajectories; None: not offered.
     `preset` holds the run's budgets and horizons (test samples, closed-loop horizon, ...).
     """
 
@@ -75,7 +78,11 @@ class EvaluationContext:
     test_trajectories: np.ndarray
     output_dir: Path
     retrain: Callable[[str, str], TrainedOnSplit]
+    retrain_on: Callable[[str, str, str], TrainedOnSplit] | None = None
     _trained: dict[tuple[str, str], TrainedOnSplit] = field(default_factory=dict, repr=False)
+    _trained_on: dict[tuple[str, str, str], TrainedOnSplit] = field(
+        default_factory=dict, repr=False
+    )
 
     @property
     def robot(self):
@@ -92,6 +99,29 @@ class EvaluationContext:
         if (split, variant) not in self._trained:
             self._trained[split, variant] = self.retrain(split, variant)
         return self._trained[split, variant]
+
+    def control_dataset(self) -> str | None:
+        """The dataset a controller is trained on: for a standard dataset whose preset names
+        one (`ClosedLoop.train_preset`), that preset's dataset of the robot (its noisy
+        variant: the expert's execution perturbed, its commands as labels); else this run's
+        own dataset (None when it has no id)."""
+        did = getattr(self.dataset, "id", None)
+        parsed = parse_dataset_id(did) if isinstance(did, str) else None
+        if parsed is None or self.retrain_on is None or dataset_id(*parsed) != did:
+            return did
+        train = preset(parsed[1]).closed_loop.train_preset
+        return dataset_id(parsed[0], train) if train else did
+
+    def on_dataset(self, dataset: str | None, split: str, variant: str) -> TrainedOnSplit:
+        """A model of this architecture trained on `dataset` (its `split`, this run's seed),
+        cached; this run's own dataset (or None) is `on_split`."""
+        if dataset is None or dataset == getattr(self.dataset, "id", None):
+            return self.on_split(split, variant)
+        if self.retrain_on is None:
+            raise SymbenchError(f"this run cannot train on another dataset ('{dataset}')")
+        if (dataset, split, variant) not in self._trained_on:
+            self._trained_on[dataset, split, variant] = self.retrain_on(dataset, split, variant)
+        return self._trained_on[dataset, split, variant]
 
     def test_raw(self) -> tuple[dict[str, np.ndarray], np.ndarray]:
         """Raw columns of the test trajectories (whole trajectories, up to the preset's

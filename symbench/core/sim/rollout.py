@@ -9,6 +9,13 @@ and the acceleration they really had is (qd_t+1 - qd_t) / dt: those are recorded
 tau and qdd obey the same dynamics (`data.qacc`, the explicit forward acceleration, would
 not). base_linacc likewise is the change of the base origin's world velocity over the
 step, which excludes gravity. Rows are kept every `record_period` seconds.
+
+Torque noise (`torque_noise` > 0, data for control): at every control step the servos
+receive the expert's command plus Gaussian noise (per joint, std `torque_noise` N m, drawn
+from `noise_seed`), which MuJoCo's actuator then clips like any command; the recorded `tau`
+stays clip(u - Kp q_t - Kd qd_t+1) with u the expert's command without the noise: the
+expert's answer at the perturbed state, not what perturbed it. With 0 the loop is exactly
+the noise-free one.
 """
 
 from __future__ import annotations
@@ -75,12 +82,16 @@ def run_climb(
     record_period: float = 0.006,
     on_step: Callable[[ControlOutput, object], None] | None = None,
     control_period: float | None = None,
+    torque_noise: float = 0.0,
+    noise_seed: list[int] | None = None,
 ) -> Rollout:
     """Simulate `climb` for `seconds`; stops early (attached=False) when the robot falls.
 
     The whole-body controller runs every `control_period` seconds (default: every physics
     step, the spec's timestep); between its calls the servos keep their command, their joint
-    feedback runs at every physics step inside MuJoCo.
+    feedback runs at every physics step inside MuJoCo. `torque_noise` (N m) adds Gaussian
+    noise, seeded by `noise_seed`, to the executed command at every control step; the
+    recorded `tau` is the expert's command without it (see the module's docstring).
     """
     import mujoco
 
@@ -103,6 +114,7 @@ def run_climb(
     failure = None
     stats = _Stats(-(-n_steps // control_every), spec.n_legs)
     probe, ctrl = lay.probe(model, data), data.ctrl  # bound once: read at every step
+    noise = np.random.default_rng(noise_seed) if torque_noise else None
     wall, cpu = time.perf_counter(), time.process_time()
     for step in range(n_steps):
         t = data.time
@@ -113,6 +125,8 @@ def run_climb(
         if control:
             out = controller(data, t, clearance < SOLE_MARGIN)
             ctrl[lay.motor] = out.command
+            if noise is not None:  # executed: the command plus noise; recorded: the command
+                ctrl[lay.motor] += noise.normal(0.0, torque_noise, out.command.shape)
             ctrl[lay.magnet] = out.magnet
             stats.update(out, data, lay, task.plan)
             failure = detachment(
@@ -218,4 +232,6 @@ def simulate(
         scenario.seconds,
         record_period,
         control_period=control_period,
+        torque_noise=scenario.torque_noise,
+        noise_seed=scenario.noise_seed() if scenario.torque_noise else None,
     )

@@ -4,11 +4,19 @@ The scene: world z up, gravity (0, 0, -9.81) always. The climbing surface is a p
 by `inclination_deg` (0 floor, 90 wall, 180 ceiling); `heading_deg` rotates the whole scene
 (plane and robot start) about world z; `yaw_deg` is the base yaw about the surface normal,
 relative to the slope (0: base x points up the slope).
+
+`torque_noise` (N m, default 0) perturbs the expert's execution for data meant for control
+(DART-style): Gaussian noise of this standard deviation is added to every joint's servo
+command at every control step, seeded from the scenario (`noise_seed`); the recorded torque
+stays the expert's own command at the perturbed state. 0 leaves the rollout untouched and
+the field out of `to_dict`, so noise-free datasets store what they always did.
 """
 
 from __future__ import annotations
 
+import json
 import math
+import zlib
 from dataclasses import asdict, dataclass, fields
 from typing import Any
 
@@ -28,17 +36,22 @@ class Scenario:
     leg_order: tuple[int, ...] | None = None
     seed: int = 0
     seconds: float = 10.0
+    torque_noise: float = 0.0  # N m, std of the noise on the executed servo command
 
     def __post_init__(self) -> None:
         if not 0.0 <= self.inclination_deg <= 180.0:
             raise SymbenchError(
                 f"scenario: inclination_deg {self.inclination_deg} is outside 0..180"
             )
-        for name in ("heading_deg", "yaw_deg", "seconds"):
+        for name in ("heading_deg", "yaw_deg", "seconds", "torque_noise"):
             if not math.isfinite(getattr(self, name)):
                 raise SymbenchError(f"scenario: {name} must be finite")
         if self.seconds <= 0:
             raise SymbenchError(f"scenario: seconds must be positive, got {self.seconds}")
+        if self.torque_noise < 0:
+            raise SymbenchError(
+                f"scenario: torque_noise must not be negative, got {self.torque_noise}"
+            )
         if self.direction not in DIRECTIONS:
             raise SymbenchError(
                 f"scenario: direction '{self.direction}' is not one of {', '.join(DIRECTIONS)}"
@@ -53,7 +66,15 @@ class Scenario:
     def to_dict(self) -> dict[str, Any]:
         d = asdict(self)
         d["leg_order"] = None if self.leg_order is None else list(self.leg_order)
+        if not self.torque_noise:  # noise-free scenarios are stored as they always were
+            del d["torque_noise"]
         return d
+
+    def noise_seed(self) -> list[int]:
+        """The seed of the torque noise: the scenario's seed and a CRC-32 of its fields, so
+        every scenario of a grid draws its own noise, the same on every machine."""
+        text = json.dumps(self.to_dict(), sort_keys=True, separators=(",", ":"))
+        return [int(self.seed), zlib.crc32(text.encode())]
 
     @classmethod
     def from_dict(cls, d: dict[str, Any]) -> Scenario:

@@ -8,6 +8,13 @@ Protocol (`symbench presets` shows its numbers, the preset's `closed_loop` group
   again, recorded at every physics step; its rows every 6 ms are the dataset's. The
   horizon is the held-out climb's own length (the trajectories the model was trained on
   are as long), capped at the preset's `seconds`.
+- Training data (`trained_on` in the metrics): the model is retrained on the `next` variant
+  of the run's split, by default on the noisy variant of a standard dataset (the preset's
+  `closed_loop.train_preset`, e.g. small -> small-noisy: the expert's executed torques
+  perturbed, its commands at the perturbed states as labels, as in DART), so that it has
+  seen states off the expert's path and the corrections the expert made there; never on
+  the run's test climbs. An imported dataset has no noisy variant: the run's own is used.
+  The references are the expert's noise-free climbs.
 - Control: the model, trained on the `next` variant, gives the feedforward torque at every
   physics step; a joint PD at a fraction of the robot's servo gains (Kp, Kd) about the
   reference at the current time closes the loop (`symbench.track` says exactly what is
@@ -62,7 +69,8 @@ ROWS = ("model", "oracle", "floor")
 def evaluate(context: EvaluationContext) -> dict:
     from symbench import build_view, track
 
-    trained = context.on_split(context.split, "next")
+    trained_on = context.control_dataset()  # the noisy variant of a standard dataset
+    trained = context.on_dataset(trained_on, context.split, "next")
     frames, entry = context.dataset.frames, context.entry
     pair = np.zeros(2, dtype=np.int64)
 
@@ -79,9 +87,13 @@ def evaluate(context: EvaluationContext) -> dict:
         budget.references,
         context.robot.group.rotation_order,
     )
-    # each reference tracked over its climb's length, capped at the preset's horizon
+    # each reference tracked over its climb's length, capped at the preset's horizon; the
+    # expert's climb without noise (when the run's own dataset is a noisy one)
     scenarios = [
-        {**fields, "seconds": min(float(fields.get("seconds", budget.seconds)), budget.seconds)}
+        {
+            **{k: v for k, v in fields.items() if k != "torque_noise"},
+            "seconds": min(float(fields.get("seconds", budget.seconds)), budget.seconds),
+        }
         for fields in chosen
     ]
     calibration = _calibration(context, scenarios, fractions, float(budget.headline_pd))
@@ -100,6 +112,7 @@ def evaluate(context: EvaluationContext) -> dict:
             runs["floor"][f].append(floor[f])
     headline = float(budget.headline_pd)
     out: dict = {
+        "trained_on": trained_on,
         "references": len(horizons),
         "orbits": orbits,
         "horizon_s": _mean(horizons),
