@@ -10,13 +10,13 @@ from types import SimpleNamespace
 
 import numpy as np
 import pytest
+from stand_ins import trained_on_split
 
 import symbench
-from symbench.core.common.arrays import ViewArrays
 from symbench.core.common.errors import SymbenchError
 from symbench.core.data.presets import PRESETS, dataset_id, parse_dataset_id
 from symbench.core.data.scenario_fields import StoredScenario
-from symbench.core.runs.evaluation import REPLAY_FIELDS, EvaluationContext, TrainedOnSplit
+from symbench.core.runs.evaluation import REPLAY_FIELDS, EvaluationContext
 from symbench.core.runs.runner import is_standard
 from symbench.core.sim.rollout import run_climb, simulate
 from symbench.core.sim.scenario import Scenario
@@ -120,18 +120,6 @@ def test_the_noisy_smoke_dataset_is_the_same_on_every_machine(tmp_path, monkeypa
     assert all(t["scenario"]["torque_noise"] == 0.5 for t in meta["trajectories"])
 
 
-def _trained(split: str, variant: str) -> TrainedOnSplit:
-    test = ViewArrays(
-        "leg_grouped",
-        variant,
-        6,
-        {"x": np.zeros((2, 6, 1))},
-        np.ones((2, 6, 3)),
-        np.zeros(2, dtype=np.int64),
-    )
-    return TrainedOnSplit(split, variant, lambda inputs: np.zeros((2, 6, 3)), test)
-
-
 @pytest.mark.parametrize(
     ("did", "trained_on"),
     [
@@ -164,11 +152,11 @@ def test_the_closed_loop_trains_on_the_noisy_variant_and_says_so(
 
     def retrain(split, variant):
         asked.append((did, split, variant))
-        return _trained(split, variant)
+        return trained_on_split(split, variant)
 
     def retrain_on(other, split, variant):
         asked.append((other, split, variant))
-        return _trained(split, variant)
+        return trained_on_split(split, variant)
 
     monkeypatch.setattr(symbench, "simulate", simulate)
     monkeypatch.setattr(symbench, "track", track)

@@ -11,15 +11,15 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 from cli_invoke import error_line, invoke
+from stand_ins import trained_on_split
 
 import symbench
-from symbench.core.common.arrays import ViewArrays
 from symbench.core.common.errors import UnknownNameError
 from symbench.core.data import load_dataset
 from symbench.core.data.presets import PRESETS, ClosedLoop, Evaluation, SampleEfficiency, Training
 from symbench.core.data.presets_cli import SECTIONS, _cell
 from symbench.core.plugin import registry
-from symbench.core.runs.evaluation import EvaluationContext, TrainedOnSplit
+from symbench.core.runs.evaluation import EvaluationContext
 from symbench.core.runs.runner import RunSpec, check_names, train_config
 from symbench.plugins.evaluators import closed_loop, invariance, sample_efficiency
 from symbench.plugins.splits import symbench_splits
@@ -157,18 +157,6 @@ def _context(preset, dataset, retrain=None, test_trajectories=(), predict=None):
     )
 
 
-def _trained(split: str, variant: str) -> TrainedOnSplit:
-    test = ViewArrays(
-        "leg_grouped",
-        variant,
-        6,
-        {"x": np.zeros((2, 6, 1))},
-        np.ones((2, 6, 3)),
-        np.zeros(2, dtype=np.int64),
-    )
-    return TrainedOnSplit(split, variant, lambda inputs: np.zeros((2, 6, 3)), test)
-
-
 @pytest.mark.parametrize("references", [1, 3])
 def test_closed_loop_tracks_the_presets_references_over_its_horizon(
     monkeypatch, tmp_path, references
@@ -210,7 +198,7 @@ def test_closed_loop_tracks_the_presets_references_over_its_horizon(
         trajectory_ids=np.arange(4),
         scenarios=[{"robot": "hexa", "yaw_deg": 10.0 * i} for i in range(4)],
     )
-    context = _context(preset, dataset, retrain=_trained, test_trajectories=[3, 2, 1, 0])
+    context = _context(preset, dataset, retrain=trained_on_split, test_trajectories=[3, 2, 1, 0])
     context.output_dir = tmp_path
     metrics = closed_loop.evaluate(context)
     assert metrics["horizon_s"] == pytest.approx(0.05) and metrics["references"] == references
@@ -233,7 +221,7 @@ def test_sample_efficiency_trains_on_the_presets_fractions(monkeypatch, tmp_path
 
     def retrain(split, variant):
         asked.append(split)
-        return _trained(split, variant)
+        return trained_on_split(split, variant)
 
     monkeypatch.setattr(sample_efficiency, "sample_efficiency_png", lambda *args: None)
     dataset = SimpleNamespace(spec=SimpleNamespace(name="hexa"), id="hexa-climb-small-v4")

@@ -177,64 +177,62 @@ _SMALL_GRID = ScenarioGrid(
     seconds=2.6,
 )
 
+SMOKE = Preset(
+    "smoke",
+    "a few one-second trajectories, for tests (seconds)",
+    _SMOKE_GRID,
+    Training(max_epochs=3),
+    _EVALUATION,
+    ClosedLoop(1.0, 2, _PD_FRACTIONS, 0.1, train_preset="smoke-noisy"),
+    _FRACTIONS,
+)
+SMALL = Preset(
+    "small",
+    "the default of `symbench run`: minutes on a laptop",
+    _SMALL_GRID,
+    Training(max_epochs=60),
+    _EVALUATION,
+    ClosedLoop(2.6, 6, _PD_FRACTIONS, 0.1, train_preset="small-noisy"),
+    _FRACTIONS,
+)
+PAPER = Preset(
+    "paper",
+    "the full replication: slopes, headings, yaws, gaits and seeds",
+    ScenarioGrid(
+        inclinations_deg=(57.29577951308232, 90.0),
+        headings_deg=(0.0, 90.0, 180.0, 270.0),
+        yaws_per_turn=6,
+        directions=("forward", "backward", "left", "right"),
+        leg_orders=LEG_ORDERS,
+        seeds=(0,),
+        seconds=10.0,
+    ),
+    Training(max_epochs=500),
+    _EVALUATION,
+    ClosedLoop(10.0, 8, _PD_FRACTIONS, 0.1),
+    _FRACTIONS,
+)
+
+
+def _noisy(base: Preset, description: str) -> Preset:
+    """Data for control: `base` with the expert's executed torques perturbed (the labels are
+    the expert's commands); every budget is the base's, whose closed loop trains on it."""
+    return replace(
+        base,
+        name=f"{base.name}-noisy",
+        description=description,
+        dataset=replace(base.dataset, torque_noise=TORQUE_NOISE),
+    )
+
+
 PRESETS: dict[str, Preset] = {
     p.name: p
     for p in (
-        Preset(
-            "smoke",
-            "a few one-second trajectories, for tests (seconds)",
-            _SMOKE_GRID,
-            Training(max_epochs=3),
-            _EVALUATION,
-            ClosedLoop(1.0, 2, _PD_FRACTIONS, 0.1, train_preset="smoke-noisy"),
-            _FRACTIONS,
-        ),
-        Preset(
-            "small",
-            "the default of `symbench run`: minutes on a laptop",
-            _SMALL_GRID,
-            Training(max_epochs=60),
-            _EVALUATION,
-            ClosedLoop(2.6, 6, _PD_FRACTIONS, 0.1, train_preset="small-noisy"),
-            _FRACTIONS,
-        ),
-        Preset(
-            "paper",
-            "the full replication: slopes, headings, yaws, gaits and seeds",
-            ScenarioGrid(
-                inclinations_deg=(57.29577951308232, 90.0),
-                headings_deg=(0.0, 90.0, 180.0, 270.0),
-                yaws_per_turn=6,
-                directions=("forward", "backward", "left", "right"),
-                leg_orders=LEG_ORDERS,
-                seeds=(0,),
-                seconds=10.0,
-            ),
-            Training(max_epochs=500),
-            _EVALUATION,
-            ClosedLoop(10.0, 8, _PD_FRACTIONS, 0.1),
-            _FRACTIONS,
-        ),
-        # data for control: the grids above with the expert's executed torques perturbed
-        # (the labels are the expert's commands); the closed-loop evaluator trains on them
-        Preset(
-            "smoke-noisy",
-            "smoke's grid with torque noise on the expert's execution, for tests",
-            replace(_SMOKE_GRID, torque_noise=TORQUE_NOISE),
-            Training(max_epochs=3),
-            _EVALUATION,
-            ClosedLoop(1.0, 2, _PD_FRACTIONS, 0.1, train_preset="smoke-noisy"),
-            _FRACTIONS,
-        ),
-        Preset(
-            "small-noisy",
-            "small's grid with torque noise on the expert's execution: data for control",
-            replace(_SMALL_GRID, torque_noise=TORQUE_NOISE),
-            Training(max_epochs=60),
-            _EVALUATION,
-            ClosedLoop(2.6, 6, _PD_FRACTIONS, 0.1, train_preset="small-noisy"),
-            _FRACTIONS,
-        ),
+        SMOKE,
+        SMALL,
+        PAPER,
+        _noisy(SMOKE, "smoke's grid with torque noise on the expert's execution, for tests"),
+        _noisy(SMALL, "small's grid with torque noise on the expert's execution: data for control"),
     )
 }
 
