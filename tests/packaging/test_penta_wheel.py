@@ -56,14 +56,16 @@ def test_the_plugin_passes_its_own_tests(penta):
     assert "3 passed" in result.stdout
 
 
-def test_sim_check_verifies_the_climb_and_the_c5_symmetry(penta):
+def test_sim_check_verifies_the_climb_and_the_d5_symmetry(penta):
+    """The declared C5 rotation and the mirror the geometry has (D5), both simulated."""
     report = json.loads(
         penta.symbench("sim", "check", "--robot", "penta", "--seconds", "1", "--json").stdout
     )
     assert report["attached"] and report["scenario"]["robot"] == "penta"
     symmetry = report["symmetry"]
-    assert symmetry["symmetric"] and [g["generator"] for g in symmetry["generators"]] == ["shift 1"]
-    assert symmetry["generators"][0]["error"] < 1e-9
+    generators = [(g["generator"], g["declared"]) for g in symmetry["generators"]]
+    assert symmetry["symmetric"] and generators == [("shift 1", True), ("mirror 0", False)]
+    assert all(g["error"] < 1e-9 for g in symmetry["generators"])
 
 
 def test_a_smoke_dataset_and_a_smoke_run(penta):

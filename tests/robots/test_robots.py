@@ -8,6 +8,7 @@ import pytest
 from symbench.core.common.errors import SymbenchError
 from symbench.core.robot.specs import load_robot, load_spec, parse_spec
 from symbench.core.sim.scenario import Scenario
+from symbench.plugins.robots import ROBOTS_DIR
 
 ROBOTS = {"magneto": (4, 2), "hexa": (6, 6), "nona": (9, 9)}
 
@@ -109,6 +110,59 @@ def test_a_spec_whose_base_lacks_the_declared_symmetry_is_refused(tmp_path):
     )
     with pytest.raises(SymbenchError, match="equal x and y base.inertia"):
         load()
+
+
+@pytest.mark.parametrize(
+    "name, geometry, mirrors",
+    [
+        ("magneto", "K4", {(3, 2, 1, 0), (1, 0, 3, 2)}),
+        ("hexa", "D6", {tuple((k - i) % 6 for i in range(6)) for k in range(6)}),
+        ("nona", "D9", {tuple((k - i) % 9 for i in range(9)) for k in range(9)}),
+    ],
+)
+def test_the_geometry_group_adds_the_mirrors_found_in_the_geometry(name, geometry, mirrors):
+    """Each mirror carries leg frames onto (mirrored) leg frames and keeps the base's
+    inertia and shape; magneto's unequal base inertia allows only its two axis mirrors."""
+    spec = load_robot(name)
+    group = spec.geometry_group
+    assert group.name == geometry and group.order == 2 * spec.group.order
+    assert {g.perm for g in group if g.reflect} == mirrors
+    assert {g for g in group if not g.reflect} == set(spec.group)
+
+
+def test_a_robot_with_skewed_coxas_has_rotations_but_no_mirror(tmp_path):
+    """Coxas all turned 10 degrees off radial: the legs still rotate onto each other, but
+    the robot is chiral, so its geometry group is the declared C6 alone."""
+    skewed = ", ".join(f"{a + 10.0:.1f}" for a in range(30, 360, 60))
+    spec = _spec_variant(
+        tmp_path,
+        {"coxa_yaw_deg = [30.0, 90.0, 150.0, 210.0, 270.0, 330.0]": f"coxa_yaw_deg = [{skewed}]"},
+    )()
+    assert spec.geometry_group is spec.group and not spec.group.has_reflections
+
+
+def test_a_declared_mirror_the_geometry_lacks_is_refused(tmp_path):
+    """magneto declaring a mirror through its diagonal legs (0 and 2): neither its mounts nor
+    its base inertia have it."""
+    text = (ROBOTS_DIR / "magneto" / "robot.toml").read_text()
+    (tmp_path / "robot.toml").write_text(
+        text.replace('kind = "cyclic"', 'kind = "dihedral"\nmirror_offset = 0')
+    )
+    with pytest.raises(SymbenchError, match="declares group D2, but .* not symmetric"):
+        load_spec(tmp_path)
+
+
+def test_a_declared_mirror_the_base_lacks_is_refused(tmp_path):
+    """magneto's legs with a mirror at 45 degrees would need equal x and y base inertia."""
+    text = (ROBOTS_DIR / "magneto" / "robot.toml").read_text()
+    text = text.replace(
+        "angles_deg = [37.234, 142.766, 217.234, 322.766]",
+        "angles_deg = [45.0, 135.0, 225.0, 315.0]",
+    )
+    text = text.replace('kind = "cyclic"', 'kind = "dihedral"\nmirror_offset = 0')
+    (tmp_path / "robot.toml").write_text(text)
+    with pytest.raises(SymbenchError, match="base's inertia or shape is not symmetric"):
+        load_spec(tmp_path)
 
 
 def test_a_shift_that_is_not_the_smallest_rotation_is_refused(tmp_path):

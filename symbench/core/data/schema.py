@@ -21,6 +21,7 @@ from symbench.core.plugin.entries import VARIANTS
 from symbench.core.plugin.entries import (
     VIEWS as VIEWS,  # re-exported: the views a model may consume
 )
+from symbench.core.symmetry.legs import JOINT_MIRROR_SIGNS
 
 JOINTS = ("coxa", "femur", "tibia")
 AXES = ("x", "y", "z")
@@ -44,7 +45,7 @@ class FeatureType(Enum):
 
 
 _REFLECTION_SIGNS = {
-    FeatureType.JOINT: (-1.0, 1.0, 1.0),  # coxa yaw flips; femur, tibia pitch do not
+    FeatureType.JOINT: JOINT_MIRROR_SIGNS,  # coxa yaw flips; femur, tibia pitch do not
     FeatureType.VECTOR: (1.0, -1.0, 1.0),
     FeatureType.PSEUDOVECTOR: (-1.0, 1.0, -1.0),
     FeatureType.FLAG: (1.0,),

@@ -21,7 +21,7 @@ import numpy as np
 
 from symbench.core.common.errors import SymbenchError
 from symbench.core.symmetry.groups import LegGroup, from_spec
-from symbench.core.symmetry.legs import check_geometry
+from symbench.core.symmetry.legs import check_geometry, geometry_group
 
 JOINT_NAMES = ("coxa", "femur", "tibia")
 
@@ -103,6 +103,19 @@ class RobotSpec:
         return from_spec(
             self.n_legs, self.symmetry_kind, self.symmetry_shift, self.symmetry_mirror_offset
         )
+
+    @cached_property
+    def geometry_group(self) -> LegGroup:
+        """The declared group and the mirrors the geometry also has (dihedral or Klein-4
+        for the built-in robots): what `symbench sim check` verifies in simulation."""
+        return geometry_group(
+            self.leg_rotations(), self.leg_origins(), self.group, self.base_tensors()
+        )
+
+    def base_tensors(self) -> tuple[np.ndarray, np.ndarray]:
+        """The base's principal inertia and ellipsoid semi-axes as diagonal 3x3 tensors: a
+        symmetry of the robot must map both onto themselves."""
+        return np.diag(self.base_inertia), np.diag(self.base_semi_axes)
 
     @property
     def symmetry_angle_deg(self) -> float:
@@ -293,7 +306,6 @@ def parse_spec(raw: dict, source: str = "robot.toml") -> RobotSpec:
             f"of the group ({n_legs // group.rotation_order} for {group.name}), "
             f"got {spec.symmetry_shift}"
         )
-    check_geometry(spec.leg_rotations(), spec.leg_origins(), group, source)
     in_plane = (
         spec.base_inertia[0] == spec.base_inertia[1],
         spec.base_semi_axes[0] == spec.base_semi_axes[1],
@@ -303,6 +315,7 @@ def parse_spec(raw: dict, source: str = "robot.toml") -> RobotSpec:
             f"{source}: a base with rotations of order {group.rotation_order} needs "
             "equal x and y base.inertia and base.semi_axes, or it breaks the symmetry"
         )
+    check_geometry(spec.leg_rotations(), spec.leg_origins(), group, source, spec.base_tensors())
     return spec
 
 

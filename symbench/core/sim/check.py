@@ -30,7 +30,7 @@ class CheckReport:
 
     @property
     def symmetric(self) -> bool:
-        """Every simulated generator within the tolerance (True when not checked)."""
+        """Every generator within the tolerance (True when not checked)."""
         return all(g.ok for g in self.symmetry or ())
 
     def to_dict(self) -> dict:
@@ -55,8 +55,9 @@ def check(
     scenario: Scenario, control_period: float | None = None, symmetry_seconds: float = 0.0
 ) -> CheckReport:
     """Run `scenario` with the whole-body controller; with `symmetry_seconds` > 0, also its
-    twin under each generator of the robot's group over the first `symmetry_seconds` (at
-    most the scenario's), compared with the run after relabelling."""
+    twin under each generator of the robot's geometry group (declared rotations and mirrors)
+    over the first `symmetry_seconds` (at most the scenario's), compared with the run after
+    relabelling."""
     if control_period is not None and not (math.isfinite(control_period) and control_period > 0):
         raise SymbenchError(
             f"control period must be a positive number of seconds, got {control_period}"

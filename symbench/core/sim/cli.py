@@ -75,8 +75,8 @@ def check_command(
     as_json: bool,
 ) -> None:
     """Run the controller, and its twin under each generator of the robot's symmetry group
-    (turned, or mirrored, and relabelled); exit status 1 when the robot detached or a twin
-    differs from the run by more than the tolerance."""
+    and of the mirrors its geometry has (turned, or mirrored, and relabelled); exit status 1
+    when the robot detached or a twin differs from the run by more than the tolerance."""
     from symbench.core.sim.check import check
     from symbench.core.sim.scenario import Scenario
 
@@ -129,11 +129,9 @@ def _print_symmetry(report) -> None:
         f"(largest relative error per column, tolerance {TOLERANCE:g}):"
     )
     for g in report.symmetry:
-        if g.error is None:
-            click.echo(f"    {g.generator}: not simulated ({g.note})")
-            continue
         verdict = "ok" if g.ok else "BROKEN"
-        click.echo(f"    {g.generator}: error {g.error:.1e} ({g.worst_column}) {verdict}")
+        origin = "" if g.declared else " (geometry, not declared)"
+        click.echo(f"    {g.generator}{origin}: error {g.error:.1e} ({g.worst_column}) {verdict}")
 
 
 @sim.command("mjcf")

@@ -1,7 +1,8 @@
 """One climb, fully specified in numbers: the robot on its arena, start pose and gait.
 
-`Climb.from_scenario` maps a `Scenario` (direction by name) onto it; the symmetry test uses
-`Climb` directly because a rotated-and-relabelled run steps in a rotated body direction.
+`Climb.from_scenario` maps a `Scenario` (direction by name) onto it; the symmetry check uses
+`Climb` directly because a turned (or mirrored) and relabelled run steps in another body
+direction.
 """
 
 from __future__ import annotations
@@ -10,15 +11,19 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from symbench.core.common.errors import SymbenchError
 from symbench.core.robot.specs import RobotSpec, load_robot
 from symbench.core.sim.arena import Arena, rot_z
 from symbench.core.sim.gait import GaitPlan, check_order, default_order
 from symbench.core.sim.kinematics import leg_fk, leg_ik
 from symbench.core.sim.model import ankle_to_sole, stance_height
 from symbench.core.sim.scenario import Scenario
+from symbench.core.symmetry.groups import GroupElement
+from symbench.core.symmetry.legs import MIRROR_Y, base_map
 
 # Seeded start perturbation: a translation in the surface plane and a small base twist,
-# both world-frame, so that they commute with the robot's rotation symmetry.
+# both world-frame, so that they commute with the robot's rotation symmetry (a mirrored climb
+# mirrors them: the cross-slope components and the twist change sign).
 SEED_OFFSET = 0.01  # m
 SEED_LINVEL = 0.02  # m/s
 SEED_ANGVEL = 0.05  # rad/s
@@ -32,6 +37,7 @@ class Climb:
     direction_deg: float = 0.0  # body frame, counter-clockwise from the base x axis
     order: tuple[int, ...] | None = None
     seed: int = 0
+    mirrored: bool = False  # the seeded perturbation mirrored across the slope line
 
     @classmethod
     def from_scenario(cls, scenario: Scenario, spec: RobotSpec | None = None) -> Climb:
@@ -70,6 +76,27 @@ class Climb:
             order=order,
         )
 
+    def reflected(self, g: GroupElement) -> Climb:
+        """The mirror image of this climb under the reflection element `g`, legs relabelled.
+
+        The scene is mirrored in the plane through the surface normal and the slope line,
+        which keeps the surface and gravity; the robot's image is the robot again with leg i
+        as leg g.perm[i] (refused when its legs lack that symmetry). So the base yaw and the
+        body step direction reflect about the element's mirror line, the swing order follows
+        the labels and the seeded start perturbation is mirrored.
+        """
+        if not g.reflect:
+            raise SymbenchError(f"{g.name} is a rotation; turn the climb instead")
+        gb = base_map(self.spec.leg_rotations(), self.spec.leg_origins(), g)
+        twice_axis = float(np.degrees(np.arctan2(*(gb @ MIRROR_Y)[[1, 0], 0])))
+        return replace(
+            self,
+            yaw_deg=-self.yaw_deg - twice_axis,
+            direction_deg=twice_axis - self.direction_deg,
+            order=tuple(g.perm[leg] for leg in self.leg_order),
+            mirrored=not self.mirrored,
+        )
+
     @property
     def leg_order(self) -> tuple[int, ...]:
         n = self.spec.n_legs
@@ -83,9 +110,10 @@ class Climb:
     def _seeded(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         rng = np.random.default_rng(self.seed)
         surface = self.arena.rotation
-        offset = surface[:, :2] @ rng.uniform(-SEED_OFFSET, SEED_OFFSET, 2)
-        linvel = surface[:, :2] @ rng.uniform(-SEED_LINVEL, SEED_LINVEL, 2)
-        angvel = self.arena.normal * rng.uniform(-SEED_ANGVEL, SEED_ANGVEL)
+        side = np.array([1.0, -1.0]) if self.mirrored else np.ones(2)
+        offset = surface[:, :2] @ (side * rng.uniform(-SEED_OFFSET, SEED_OFFSET, 2))
+        linvel = surface[:, :2] @ (side * rng.uniform(-SEED_LINVEL, SEED_LINVEL, 2))
+        angvel = self.arena.normal * (side[1] * rng.uniform(-SEED_ANGVEL, SEED_ANGVEL))
         return offset, linvel, angvel
 
     def plan(self) -> GaitPlan:
