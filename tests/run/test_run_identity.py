@@ -35,8 +35,8 @@ SMALL = "hexa-climb-small-v4"
 LOGS = "hexa-logs"  # imported: the smoke trajectories exported and imported again
 
 
-def key(dataset: str, preset: str, model: str = "sdnn", seed: int = 0) -> str:
-    return f"{dataset}__{preset}__iid__{model}__acc__torch__seed{seed}"
+def key(dataset: str, preset: str, model: str = "sdnn", seed: int = 0, variant="acc") -> str:
+    return f"{dataset}__{preset}__iid__{model}__{variant}__torch__seed{seed}"
 
 
 @pytest.fixture(scope="module")
@@ -128,6 +128,19 @@ def test_a_sweep_runs_what_another_presets_record_does_not_hold(home, tmp_path):
     assert smoke.read_bytes() == before
     again = sweep_command(out, "--robots", "hexa", "--preset", "small")
     assert again.stdout.splitlines() == ["1 of 1 runs already have records; 0 to run"]
+
+
+def test_a_sweep_with_the_next_variant_keeps_its_records_apart(home, tmp_path):
+    """`sweep --variant next` (the closed loop's control runs) trains every run on the next
+    variant, under keys of their own beside the default variant's records."""
+    out = tmp_path / "results"
+    assert sweep_command(out, "--robots", "hexa", "--preset", "smoke").exit_code == 0
+    result = sweep_command(out, "--robots", "hexa", "--preset", "smoke", "--variant", "next")
+    assert result.exit_code == 0, result.output
+    nxt = out / f"{key(SMOKE, 'smoke', variant='next')}.json"
+    assert result.stdout.splitlines()[-1] == f"finished {nxt.stem}"
+    assert read_record(nxt).model.variant == "next"
+    assert read_record(out / f"{key(SMOKE, 'smoke')}.json").model.variant == "acc"
 
 
 def test_a_record_of_another_configuration_is_refused_or_replaced(home, tmp_path):

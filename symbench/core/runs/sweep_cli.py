@@ -67,6 +67,13 @@ from symbench.core.runs.runner import DEFAULT_EVALUATORS, RunSpec, default_prese
     help="The budgets of every run; default: a standard dataset's own preset, else small.",
 )
 @click.option(
+    "--variant",
+    type=click.Choice(["acc", "next"]),
+    default=None,
+    help="Input variant of every run (default: each model's; closed-loop control uses next: "
+    "with a noisy preset, the closed-loop evaluator then judges the run's own model).",
+)
+@click.option(
     "--evaluators", default=",".join(DEFAULT_EVALUATORS), show_default=True, type=CommaList()
 )
 @click.option("--output", type=WritableFolder(), default=Path("results"), show_default=True)
@@ -101,6 +108,7 @@ def sweep(
     seeds: list[int],
     backends: list[str],
     preset: str | None,
+    variant: str | None,
     evaluators: list[str],
     output: Path,
     workers: int,
@@ -124,6 +132,7 @@ def sweep(
         model="",
         robot="",
         preset=preset or "small",
+        variant=variant,
         evaluators=tuple(evaluators),
         output=output,
         workers=workers,
