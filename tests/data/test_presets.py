@@ -14,7 +14,7 @@ from cli_invoke import error_line, invoke
 from stand_ins import trained_on_split
 
 import symbench
-from symbench.core.common.errors import UnknownNameError
+from symbench.core.common.errors import SymbenchError, UnknownNameError
 from symbench.core.data import load_dataset
 from symbench.core.data.presets import PRESETS, ClosedLoop, Evaluation, SampleEfficiency, Training
 from symbench.core.data.presets_cli import SECTIONS, _cell
@@ -25,12 +25,29 @@ from symbench.plugins.evaluators import closed_loop, invariance, sample_efficien
 from symbench.plugins.splits import symbench_splits
 
 # The published board was made with these numbers: changing one is a new protocol.
+SMOKE_TRAINING = Training(max_steps=30, eval_every=10, patience=2, max_epochs=3)
+SMALL_TRAINING = Training(max_steps=10000, eval_every=500, patience=6, max_epochs=60)
 BUDGETS = {
-    "smoke": {"max_epochs": 3, "horizon_s": 1.0, "references": 2, "grid_seconds": 1.0},
-    "small": {"max_epochs": 60, "horizon_s": 2.6, "references": 6, "grid_seconds": 2.6},
-    "paper": {"max_epochs": 500, "horizon_s": 10.0, "references": 8, "grid_seconds": 10.0},
-    "smoke-noisy": {"max_epochs": 3, "horizon_s": 1.0, "references": 2, "grid_seconds": 1.0},
-    "small-noisy": {"max_epochs": 60, "horizon_s": 2.6, "references": 6, "grid_seconds": 2.6},
+    "smoke": {"training": SMOKE_TRAINING, "horizon_s": 1.0, "references": 2, "grid_seconds": 1.0},
+    "small": {"training": SMALL_TRAINING, "horizon_s": 2.6, "references": 6, "grid_seconds": 2.6},
+    "paper": {
+        "training": Training(max_steps=200000, eval_every=2000, patience=10, max_epochs=500),
+        "horizon_s": 10.0,
+        "references": 8,
+        "grid_seconds": 10.0,
+    },
+    "smoke-noisy": {
+        "training": SMOKE_TRAINING,
+        "horizon_s": 1.0,
+        "references": 2,
+        "grid_seconds": 1.0,
+    },
+    "small-noisy": {
+        "training": SMALL_TRAINING,
+        "horizon_s": 2.6,
+        "references": 6,
+        "grid_seconds": 2.6,
+    },
 }
 # the closed loop trains on these presets' datasets (data for control)
 TRAIN_PRESETS = {
@@ -64,7 +81,7 @@ def test_the_budgets_are_those_of_the_published_board():
     assert list(PRESETS) == list(BUDGETS)
     for name, budget in BUDGETS.items():
         p = PRESETS[name]
-        assert p.training.max_epochs == budget["max_epochs"]
+        assert p.training == budget["training"]
         assert p.closed_loop == ClosedLoop(
             seconds=budget["horizon_s"],
             references=budget["references"],
@@ -96,7 +113,12 @@ def test_presets_json_is_every_preset_with_every_number():
     for name, p in PRESETS.items():
         assert shown[name] == json.loads(json.dumps(dataclasses.asdict(p)))
         assert list(shown[name]) == ["name", "description", *SECTIONS]
-    assert shown["paper"]["training"] == {"max_epochs": 500}
+    assert shown["paper"]["training"] == {
+        "max_steps": 200000,
+        "eval_every": 2000,
+        "patience": 10,
+        "max_epochs": 500,
+    }
     assert shown["smoke"]["closed_loop"] == {
         "seconds": 1.0,
         "references": 2,
@@ -128,12 +150,32 @@ def test_a_wrong_presets_command_line_is_one_line():
     assert "unexpected extra argument" in error_line(invoke("presets", "small"), 2)
 
 
-def test_the_run_takes_its_epoch_cap_from_the_preset(monkeypatch):
+def test_the_run_takes_its_budgets_from_the_preset(monkeypatch):
     spec = RunSpec(model="sdnn", robot="hexa", preset="smoke", progress=False)
-    assert train_config(spec).max_epochs == 3
-    with_preset(monkeypatch, "smoke", training=Training(max_epochs=7))
-    assert train_config(spec).max_epochs == 7
-    assert train_config(dataclasses.replace(spec, max_epochs=2)).max_epochs == 2  # --max-epochs
+    config = train_config(spec)
+    assert (config.protocol, config.max_steps, config.eval_every, config.patience) == (
+        "converge",
+        30,
+        10,
+        2,
+    )
+    with_preset(monkeypatch, "smoke", training=Training(700, 70, 3, max_epochs=7))
+    config = train_config(spec)
+    assert (config.max_steps, config.eval_every, config.patience) == (700, 70, 3)
+    assert train_config(dataclasses.replace(spec, max_steps=140)).max_steps == 140  # --max-steps
+    paper = dataclasses.replace(spec, protocol="paper")
+    assert train_config(paper).max_epochs == 7
+    assert train_config(dataclasses.replace(paper, max_epochs=2)).max_epochs == 2  # --max-epochs
+
+
+@pytest.mark.parametrize(
+    "protocol, budget, option",
+    [("converge", {"max_epochs": 2}, "--max-epochs"), ("paper", {"max_steps": 9}, "--max-steps")],
+)
+def test_a_budget_of_the_other_protocol_is_refused(protocol, budget, option):
+    spec = RunSpec(model="sdnn", robot="hexa", preset="smoke", protocol=protocol, **budget)
+    with pytest.raises(SymbenchError, match=f"{option} is a budget of the other protocol"):
+        train_config(spec)
 
 
 def test_an_unknown_preset_is_named_with_the_known_ones():

@@ -18,7 +18,9 @@ from symbench.core.training.loop import TrainConfig, train
 from symbench.core.training.resume import BEST_DIR, PREVIOUS, RESUME, CheckpointWarning
 from symbench.core.training.trained_model import TENSORS, TrainedModel
 
-WHOLE, FIRST = (TrainConfig(max_epochs=n, hyper=SMALL["sdnn"], progress=False) for n in (4, 2))
+WHOLE, FIRST = (
+    TrainConfig(max_steps=n, eval_every=4, hyper=SMALL["sdnn"], progress=False) for n in (16, 8)
+)
 DAMAGED = "damaged (its content does not match its SHA-256)"
 
 
@@ -31,7 +33,7 @@ def data(smoke):
 def whole(data) -> TrainedModel:
     """The uninterrupted run that every recovered run must reproduce."""
     model = train(registry.model("sdnn", "torch"), *data, WHOLE)
-    assert len(model.history["val_loss"]) == 4  # so resumed runs train on after epoch 2
+    assert len(model.history["val_loss"]) == 4  # so resumed runs train on after check 2
     return model
 
 

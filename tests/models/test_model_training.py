@@ -1,4 +1,4 @@
-"""The one training protocol: every model learns, stops by the rule, resumes exactly."""
+"""The training protocols: every model learns, stops by its protocol's rule, resumes exactly."""
 
 from __future__ import annotations
 
@@ -12,19 +12,22 @@ from symbench.core.training.loop import TrainConfig, batch_order, train
 from symbench.core.training.trained_model import TrainedModel
 
 
+def converge(checks: int, every: int, **kwargs) -> TrainConfig:
+    """The converge protocol with a budget of `checks` validation checks `every` steps apart
+    (patience 10 unless given: the budget ends these short trainings)."""
+    options = {"patience": 10, "progress": False, **kwargs}
+    return TrainConfig(max_steps=checks * every, eval_every=every, **options)
+
+
 @pytest.mark.parametrize("backend", BACKENDS)
 @pytest.mark.parametrize("name", MODELS)
 def test_validation_loss_falls(name, backend, smoke):
     entry = registry.model(name, backend)
     tr, va = smoke
-    model = train(
-        entry,
-        tr[entry.view],
-        va[entry.view],
-        TrainConfig(max_epochs=6, hyper=SMALL[name], progress=False),
-    )
+    model = train(entry, tr[entry.view], va[entry.view], converge(6, 16, hyper=SMALL[name]))
     val = model.history["val_loss"]
     assert len(val) == 6 and min(val[1:]) < 0.8 * val[0], val
+    assert model.steps == 96 and model.stopped_by == "budget"
     assert model.best_epoch == int(np.argmin(val))
     y = model.predict(va[entry.view].inputs)
     assert y.shape == (256, 4, 3) and y.dtype == np.float64
@@ -35,16 +38,24 @@ def test_validation_loss_falls(name, backend, smoke):
 
 
 @pytest.mark.parametrize("backend", BACKENDS)
-def test_interrupted_training_resumes_exactly(backend, smoke, tmp_path):
+@pytest.mark.parametrize("protocol", ["converge", "paper"])
+def test_interrupted_training_resumes_exactly(backend, protocol, smoke, tmp_path):
+    """Under converge the checks fall every 3 steps of 4-batch epochs: a check, and so a
+    resume, in the middle of an epoch continues its batch order."""
     entry = registry.model("sdnn", backend)
     tr, va = (s["leg_grouped"].take(np.arange(256)) for s in smoke)
-    config = TrainConfig(max_epochs=4, hyper=SMALL["sdnn"], progress=False)
+    if protocol == "converge":
+        config, shorter = (converge(n, 3, hyper=SMALL["sdnn"]) for n in (4, 2))
+    else:
+        config, shorter = (
+            TrainConfig(protocol="paper", max_epochs=n, hyper=SMALL["sdnn"], progress=False)
+            for n in (4, 2)
+        )
     whole = train(entry, tr, va, config)
-    first = train(
-        entry, tr, va, TrainConfig(max_epochs=2, hyper=SMALL["sdnn"], progress=False), tmp_path
-    )
+    first = train(entry, tr, va, shorter, tmp_path)
     assert len(first.history["val_loss"]) == 2
     resumed = train(entry, tr, va, config, tmp_path)
+    assert resumed.steps == whole.steps == (12 if protocol == "converge" else 16)
     # torch repeats itself bit for bit; XLA's CPU kernels may round the last bit differently
     # for buffers that were reloaded, so allow float32 rounding
     assert resumed.best_epoch == whole.best_epoch
@@ -57,20 +68,14 @@ def test_interrupted_training_resumes_exactly(backend, smoke, tmp_path):
 def test_resume_refuses_a_checkpoint_of_another_configuration(smoke, tmp_path):
     entry = registry.model("sdnn", "torch")
     tr, va = (s["leg_grouped"].take(np.arange(128)) for s in smoke)
-    train(entry, tr, va, TrainConfig(max_epochs=1, hyper=SMALL["sdnn"], progress=False), tmp_path)
+    train(entry, tr, va, converge(1, 2, hyper=SMALL["sdnn"]), tmp_path)
     with pytest.raises(SymbenchError, match="another model, data or configuration"):
-        train(
-            entry,
-            tr,
-            va,
-            TrainConfig(max_epochs=1, seed=1, hyper=SMALL["sdnn"], progress=False),
-            tmp_path,
-        )
+        train(entry, tr, va, converge(1, 2, seed=1, hyper=SMALL["sdnn"]), tmp_path)
 
 
 def test_resume_refuses_a_checkpoint_of_other_data_of_the_same_size(smoke, tmp_path):
     entry = registry.model("sdnn", "torch")
-    config = TrainConfig(max_epochs=1, hyper=SMALL["sdnn"], progress=False)
+    config = converge(1, 2, hyper=SMALL["sdnn"])
     tr, va = (s["leg_grouped"].take(np.arange(128)) for s in smoke)
     train(entry, tr, va, config, tmp_path)
     other = tr.take(np.arange(128)[::-1])  # same samples, another order: other data
@@ -78,8 +83,11 @@ def test_resume_refuses_a_checkpoint_of_other_data_of_the_same_size(smoke, tmp_p
         train(entry, other, va, config, tmp_path)
 
 
-@pytest.mark.parametrize("ratio, patience, epochs", [(1e9, 3, 3), (0.0, 3, 5)])
-def test_stopping_rule(ratio, patience, epochs, smoke):
+@pytest.mark.parametrize(
+    "ratio, patience, epochs, stopped_by",
+    [(1e9, 3, 3, "overfitting-rule"), (0.0, 3, 5, "epoch-cap")],
+)
+def test_the_paper_stopping_rule(ratio, patience, epochs, stopped_by, smoke):
     """ratio x val > train every epoch: stop after `patience` epochs; never: run to the cap."""
     entry = registry.model("sdnn", "torch")
     tr, va = (s["leg_grouped"].take(np.arange(128)) for s in smoke)
@@ -88,6 +96,7 @@ def test_stopping_rule(ratio, patience, epochs, smoke):
         tr,
         va,
         TrainConfig(
+            protocol="paper",
             max_epochs=5,
             stop_ratio=ratio,
             stop_patience=patience,
@@ -95,7 +104,35 @@ def test_stopping_rule(ratio, patience, epochs, smoke):
             progress=False,
         ),
     )
-    assert len(model.history["val_loss"]) == epochs
+    assert len(model.history["val_loss"]) == epochs and model.stopped_by == stopped_by
+    assert model.steps == 2 * epochs  # two batches of 64 per epoch
+
+
+def test_converge_stops_once_validation_stops_improving(smoke):
+    """A learning rate too small to move any weight: the validation loss never improves on
+    the first check, so training stops `patience` checks later, long before the budget, and
+    keeps the first check's parameters."""
+    entry = registry.model("sdnn", "torch")
+    tr, va = (s["leg_grouped"].take(np.arange(128)) for s in smoke)
+    model = train(entry, tr, va, converge(50, 2, patience=3, learning_rate=1e-30))
+    assert len(model.history["val_loss"]) == 4 and model.steps == 8
+    assert model.stopped_by == "patience" and model.best_epoch == 0 and model.best_step == 2
+
+
+def test_converge_gives_every_training_fraction_the_same_budget(smoke):
+    """Half the data, the same number of gradient steps (the paper protocol's epochs would
+    give it half as many)."""
+    entry = registry.model("ffnn", "torch")
+    tr, va = (s["vector"] for s in smoke)
+    config = converge(3, 20, hyper=SMALL["ffnn"])
+    full, half = (train(entry, tr.take(np.arange(n)), va, config) for n in (1024, 512))
+    assert full.steps == half.steps == 60
+    assert full.stopped_by == half.stopped_by == "budget"
+
+
+def test_an_unknown_protocol_is_refused():
+    with pytest.raises(SymbenchError, match="unknown training protocol 'fast'"):
+        TrainConfig(protocol="fast")
 
 
 def test_batch_order_is_a_seeded_permutation_per_epoch():
@@ -111,10 +148,11 @@ def test_best_checkpoint_round_trips_without_pickle(smoke, tmp_path):
         entry,
         tr["leg_grouped"],
         va["leg_grouped"],
-        TrainConfig(max_epochs=2, hyper=SMALL["sdgnn"], progress=False),
+        converge(2, 8, hyper=SMALL["sdgnn"]),
         tmp_path,
     )
     loaded = TrainedModel.load(tmp_path / "best")
+    assert (loaded.steps, loaded.stopped_by) == (model.steps, model.stopped_by) == (16, "budget")
     assert loaded.n_params == model.n_params and loaded.history == model.history
     np.testing.assert_array_equal(
         loaded.predict(va["leg_grouped"].inputs), model.predict(va["leg_grouped"].inputs)

@@ -68,7 +68,7 @@ def refused_or_reached(result, options: tuple[str, ...]) -> bool:
 COUNTS = st.integers(0, 2**33).map(str)
 RUN = {
     "--seed": COUNTS,
-    "--max-epochs": COUNTS,
+    "--max-steps": COUNTS,
     "--workers": COUNTS,
     "--evaluators": st.sampled_from(["torque-error", "torque-error,equivariance"]),
     "--output": PATHS,
@@ -101,7 +101,7 @@ def test_run_values_are_refused_or_handed_on_in_range(values):
             return
         spec = run.call_args.args[0]
         assert spec.seed == int(values["--seed"]) and 0 <= spec.seed <= SEED_MAX
-        assert spec.max_epochs == int(values["--max-epochs"]) >= 1
+        assert spec.max_steps == int(values["--max-steps"]) >= 1
         assert spec.workers == int(values["--workers"]) >= 1
         assert list(spec.evaluators) == names and len(set(names)) == len(names) > 0
         assert spec.output.is_dir()  # made, and a folder: nothing in the way

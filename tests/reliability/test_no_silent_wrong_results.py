@@ -64,25 +64,26 @@ def test_a_model_whose_torques_are_misshaped_is_named_in_training(backend, shape
             entry,
             views["leg_grouped"],
             val["leg_grouped"],
-            TrainConfig(max_epochs=1, progress=False),
+            TrainConfig(max_steps=1, progress=False),
         )
 
 
-def test_max_epochs_0_is_refused_not_the_presets_cap(monkeypatch, tmp_path):
+@pytest.mark.parametrize(
+    "option, field, protocol",
+    [("--max-steps", "max_steps", "converge"), ("--max-epochs", "max_epochs", "paper")],
+)
+def test_a_zero_budget_is_refused_not_the_presets(monkeypatch, tmp_path, option, field, protocol):
     def never(*args, **kwargs):
         raise AssertionError("the run started")
 
     monkeypatch.setattr(run_command, "run_spec", never)
     monkeypatch.setattr(runner, "ensure_dataset", never)
-    message = error_line(
-        invoke(
-            "run", "--model", "sdnn", "--robot", "hexa", "--max-epochs", "0", "--output", tmp_path
-        ),
-        2,
-    )
-    assert "Invalid value for '--max-epochs': 0 is not in the range x>=1" in message
-    with pytest.raises(SymbenchError, match="TrainConfig.max_epochs must be at least 1, got 0"):
-        runner.run(RunSpec(model="sdnn", robot="hexa", max_epochs=0, output=tmp_path))
+    command = ("run", "--model", "sdnn", "--robot", "hexa", "--protocol", protocol)
+    message = error_line(invoke(*command, option, "0", "--output", tmp_path), 2)
+    assert f"Invalid value for '{option}': 0 is not in the range x>=1" in message
+    spec = RunSpec(model="sdnn", robot="hexa", protocol=protocol, output=tmp_path)
+    with pytest.raises(SymbenchError, match=f"TrainConfig.{field} must be at least 1, got 0"):
+        runner.run(dataclasses.replace(spec, **{field: 0}))
 
 
 def test_rehashed_metadata_whose_step_count_disagrees_with_the_files_is_refused(smoke_hexa):

@@ -117,7 +117,7 @@ def test_closed_loop_evaluator_in_a_run(smoke_home, tmp_path):
             evaluators=("closed-loop",),
             output=tmp_path,
             progress=False,
-            max_epochs=2,
+            max_steps=20,
         )
     )
     metrics = record.metrics["closed-loop"]
@@ -155,7 +155,7 @@ def test_the_calibration_is_measured_once_per_output_folder(smoke_home, tmp_path
             evaluators=("closed-loop",),
             output=tmp_path,
             progress=False,
-            max_epochs=1,
+            max_steps=10,
         )
         return run(spec).metrics["closed-loop"]
 
@@ -184,7 +184,7 @@ def test_closed_loop_on_the_held_out_splits(smoke_home, tmp_path, split):
             evaluators=("closed-loop",),
             output=tmp_path,
             progress=False,
-            max_epochs=1,
+            max_steps=10,
         )
     )
     metrics = record.metrics["closed-loop"]

@@ -101,7 +101,7 @@ def test_a_run_on_logs_without_yaws_skips_what_it_cannot_do(smoke_hexa, home, tm
     evaluators = "torque-error,closed-loop,generalization"
     result = invoke(
         *("run", "--model", "ffnn", "--dataset", "hexa-logs", "--preset", "smoke"),
-        *("--evaluators", evaluators, "--max-epochs", "1", "--output", tmp_path / "out"),
+        *("--evaluators", evaluators, "--max-steps", "10", "--output", tmp_path / "out"),
     )
     assert result.exit_code == 0, result.output
     rows = [" ".join(line.strip("│ ").split()) for line in result.stdout.splitlines()]

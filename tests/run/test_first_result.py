@@ -42,7 +42,7 @@ def test_full_and_evaluators_together_are_a_usage_error(tmp_path):
 
 
 def test_each_stage_is_announced_with_the_time_so_far(smoke_home, tmp_path):
-    args = [*SMOKE_RUN, "--max-epochs", "1", "--output", str(tmp_path)]
+    args = [*SMOKE_RUN, "--max-steps", "10", "--output", str(tmp_path)]
     result = CliRunner().invoke(build_cli(), args, catch_exceptions=False)
     assert result.exit_code == 0, result.output
     stages = [line for line in result.stdout.splitlines() if line.endswith("s so far)")]

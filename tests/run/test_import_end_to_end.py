@@ -52,7 +52,7 @@ def test_import_split_train_and_evaluate_from_the_command_line(home, tmp_path):
     assert info_2["content_hash"] == info["content_hash"]  # path and id are not content
 
     results = tmp_path / "results"
-    run = ["run", "--model", "ffnn", "--preset", "smoke", "--max-epochs", "2", *SPLIT]
+    run = ["run", "--model", "ffnn", "--preset", "smoke", "--max-steps", "20", *SPLIT]
     run += ["--evaluators", "torque-error", "--output", str(results)]
     invoke([*run, "--dataset", "wall"])
     invoke([*run, "--dataset", "wall-2"])

@@ -33,7 +33,7 @@ def test_every_model_on_every_robot_writes_a_valid_record(smoke_home, tmp_path, 
         evaluators=EVALUATORS,
         output=tmp_path,
         progress=False,
-        max_epochs=2,
+        max_steps=20,
     )
     record = run(spec)
     assert read_record(spec.record_path) == record
@@ -65,8 +65,8 @@ def test_cli_prints_a_table_and_writes_the_record(smoke_home, tmp_path):
             "hexa",
             "--preset",
             "smoke",
-            "--max-epochs",
-            "2",
+            "--max-steps",
+            "20",
             "--evaluators",
             "torque-error",
             "--output",
@@ -120,7 +120,7 @@ def test_a_run_may_choose_the_next_variant(smoke_home, tmp_path):
         evaluators=("torque-error", "equivariance"),
         output=tmp_path,
         progress=False,
-        max_epochs=2,
+        max_steps=20,
     )
     record = run(spec)
     assert record.model.variant == "next"
@@ -139,7 +139,7 @@ def test_timings_count_each_second_once(smoke_home, tmp_path):
             evaluators=("torque-error", "generalization"),
             output=tmp_path,
             progress=False,
-            max_epochs=2,
+            max_steps=20,
         )
     )
     timings = record.timings_s
@@ -159,7 +159,7 @@ def test_a_record_carries_what_it_takes_to_rerun_it(smoke_home, tmp_path):
         evaluators=("torque-error",),
         output=tmp_path,
         progress=False,
-        max_epochs=2,
+        max_steps=20,
     )
     record = run(spec)
     package = Path(symbench.__file__).parent / "plugins" / "torch_models"
@@ -177,13 +177,20 @@ def test_a_record_carries_what_it_takes_to_rerun_it(smoke_home, tmp_path):
     assert record.training.config.model_dump() == {
         "seed": 0,
         "batch_size": 64,
-        "max_epochs": 2,
+        "protocol": "converge",
+        "max_steps": 20,
+        "eval_every": 10,
+        "patience": 2,
+        "max_epochs": 3,
         "stop_ratio": 0.7,
         "stop_patience": 5,
         "learning_rate": 5e-4,
         "hyper": {},
         "compile": False,
     }
+    t = record.training
+    assert (t.steps, t.stopped_by) in ((20, "budget"), (20, "patience"))
+    assert t.stop_reason and 0 < t.best_step <= t.steps
     best = next((tmp_path / "checkpoints" / spec.key()).glob("*/iid__acc/best"))
     assert record.training.checkpoint_sha256 == {
         p.name: sha256_of(p.read_bytes()) for p in sorted(best.iterdir())

@@ -57,7 +57,9 @@ def home(data_home, monkeypatch):
     """`data_home`, with the small preset's epoch cap lowered to 1 (its budgets otherwise)."""
     monkeypatch.setenv("SYMBENCH_HOME", str(data_home))
     small = PRESETS["small"]
-    monkeypatch.setitem(PRESETS, "small", dataclasses.replace(small, training=Training(1)))
+    monkeypatch.setitem(
+        PRESETS, "small", dataclasses.replace(small, training=Training(10, 10, 1, 1))
+    )
     return data_home
 
 
@@ -156,16 +158,16 @@ def test_a_record_of_another_configuration_is_refused_or_replaced(home, tmp_path
     )
     assert path.read_bytes() == before  # nothing ran
     # `symbench run` refuses too, before any work
-    fewer_epochs = ("--robot", "hexa", "--preset", "smoke", "--max-epochs", "1")
+    fewer_steps = ("--robot", "hexa", "--preset", "smoke", "--max-steps", "10")
     message = error_line(
         invoke(
-            "run", "--model", "sdnn", *fewer_epochs, "--evaluators", "torque-error", "--output", out
+            "run", "--model", "sdnn", *fewer_steps, "--evaluators", "torque-error", "--output", out
         ),
         1,
     )
     assert message == (
-        f"Error: {path} is a record of another configuration (training max_epochs 3 in the "
-        "record, 1 in this run); pass --overwrite to run it again and replace it, or choose "
+        f"Error: {path} is a record of another configuration (training max_steps 30 in the "
+        "record, 10 in this run); pass --overwrite to run it again and replace it, or choose "
         "another --output"
     )
     result = sweep_command(out, *more, "--overwrite")
@@ -221,7 +223,7 @@ def test_run_on_an_imported_dataset_from_the_command_line(home, tmp_path):
     assert record.samples.train > 0
     # the preset defaults to small for imported data; --robot, when given, must agree
     run_command(out, "--dataset", LOGS, "--robot", "hexa")
-    assert read_record(out / f"{key(LOGS, 'small')}.json").training.config.max_epochs == 1
+    assert read_record(out / f"{key(LOGS, 'small')}.json").training.config.max_steps == 10
     assert error_line(
         invoke("run", "--model", "sdnn", "--dataset", LOGS, "--robot", "nona"), 1
     ) == (
@@ -243,7 +245,7 @@ def test_run_on_an_imported_dataset_from_the_command_line(home, tmp_path):
 def test_a_standard_dataset_named_with_dataset_runs_its_own_preset(home, tmp_path):
     out = tmp_path / "results"
     run_command(out, "--dataset", SMOKE)
-    assert read_record(out / f"{key(SMOKE, 'smoke')}.json").training.config.max_epochs == 3
+    assert read_record(out / f"{key(SMOKE, 'smoke')}.json").training.config.max_steps == 30
 
 
 def test_records_of_two_datasets_coexist_and_the_board_groups_by_dataset(home, tmp_path):
@@ -260,9 +262,9 @@ def test_records_of_two_datasets_coexist_and_the_board_groups_by_dataset(home, t
     page = (board / "hexa.md").read_text()
     assert [line for line in page.splitlines() if line.startswith("#")] == [
         "# hexa",
-        f"## Dataset {SMOKE}, preset smoke",
+        f"## Dataset {SMOKE}, preset smoke, converge protocol",
         "### iid",
-        f"## Dataset {LOGS}, preset small",
+        f"## Dataset {LOGS}, preset small, converge protocol",
         "### iid",
     ]
     summary = (board / "summary.md").read_text()
@@ -271,7 +273,7 @@ def test_records_of_two_datasets_coexist_and_the_board_groups_by_dataset(home, t
         f"| {LOGS}",
     ] * 2  # the RMSE and the normalized RMSE tables
     csv = (board / "leaderboard.csv").read_text().splitlines()
-    assert csv[0].startswith("robot,dataset,preset,split,model,variant,backend,seeds,")
+    assert csv[0].startswith("robot,dataset,preset,protocol,split,model,variant,backend,seeds,")
     assert [row.split(",")[:3] for row in csv[1:]] == [
         ["hexa", SMOKE, "smoke"],
         ["hexa", LOGS, "small"],
@@ -298,6 +300,47 @@ def test_a_board_refuses_one_dataset_under_two_presets(make_record, tmp_path):
         f"records of dataset {SMOKE} were made with 2 presets (r0.json (smoke), r1.json "
         "(small)); aggregate records of one preset per dataset only"
     )
+
+
+def test_a_board_never_mixes_training_protocols_in_one_table(make_record, tmp_path):
+    """Records of the same runs under `paper` (the old records, read so) and `converge` get
+    sections of their own, each ranked on its own, with steps and stop reasons shown."""
+    from symbench.core.board.leaderboard import aggregate, load_records, markdown
+    from symbench.core.board.summary import headline
+
+    for seed in range(3):
+        for model, rmse in (("sdnn", 0.1), ("ffnn", 0.2)):
+            paper = make_record(model=model, seed=seed, rmse=rmse)
+            write_record(paper, tmp_path / f"paper-{model}-{seed}.json")
+            converge = make_record(model=model, seed=seed, rmse=rmse / 10)
+            converge["training"]["config"] |= {
+                "protocol": "converge",
+                "max_steps": 30,
+                "eval_every": 10,
+                "patience": 2,
+            }
+            converge["training"] |= {"steps": 30, "best_step": 20, "stopped_by": "budget"}
+            write_record(converge, tmp_path / f"converge-{model}-{seed}.json")
+    table = aggregate(load_records(tmp_path))
+    assert sorted(set(zip(table.protocol, table.model, table["rank"]))) == [
+        ("converge", "ffnn", 2),
+        ("converge", "sdnn", 1),
+        ("paper", "ffnn", 2),
+        ("paper", "sdnn", 1),
+    ]
+    page = markdown(table, "hexa")
+    assert [line for line in page.splitlines() if line.startswith("## ")] == [
+        f"## Dataset {SMOKE}, preset smoke, converge protocol",
+        f"## Dataset {SMOKE}, preset smoke, paper protocol",
+    ]
+    converge_part, paper_part = page.split("paper protocol")
+    assert "| 30 ± 0 | budget 3 |" in converge_part and "epoch-cap 3" not in converge_part
+    assert "| epoch-cap 3 |" in paper_part and "budget" not in paper_part
+    summary = headline(table)
+    assert summary.count("# Trained under the") == 2
+    converge_summary, paper_summary = summary.split("# Trained under the paper protocol")
+    assert "0.01" in converge_summary and "0.1 " not in converge_summary
+    assert "0.01" not in paper_summary
 
 
 def test_a_spec_whose_robot_is_not_the_datasets_is_refused_before_any_work(home, tmp_path):

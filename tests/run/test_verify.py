@@ -39,7 +39,7 @@ def records(smoke_home, tmp_path_factory) -> list[Path]:
                 evaluators=("torque-error",),
                 output=out,
                 progress=False,
-                max_epochs=2,
+                max_steps=20,
             )
             for s in range(3)
         ]

@@ -20,6 +20,6 @@ def test_leg_attention_learns():
         entry,
         tr["leg_grouped"],
         va["leg_grouped"],
-        TrainConfig(max_epochs=4, hyper={"latent": 16}, progress=False),
+        TrainConfig(max_steps=32, eval_every=8, hyper={"latent": 16}, progress=False),
     )
     assert min(model.history["val_loss"][1:]) < model.history["val_loss"][0]

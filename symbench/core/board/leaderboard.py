@@ -1,8 +1,12 @@
 """Aggregate result records into leaderboard tables (Markdown + CSV) and plots.
 
-Records are grouped by dataset, split, model, variant and backend (a dataset belongs to one
-robot; a standard dataset id names its robot and preset); metrics are averaged over seeds
-with their standard deviation, and each (dataset, split) table is ranked by test torque RMSE.
+Records are grouped by dataset, training protocol, split, model, variant and backend (a
+dataset belongs to one robot; a standard dataset id names its robot and preset); metrics are
+averaged over seeds with their standard deviation, and each (dataset, protocol, split) table
+is ranked by test torque RMSE. Protocols are never mixed in one table: each has its own
+sections. Every row shows the parameter count, the gradient steps trained and why training
+stopped (records from before the `converge` protocol were trained under the paper's rule;
+their stop reason follows from whether they stopped before the epoch cap).
 Each robot's page has a section per dataset, so a robot's standard data and its imported
 logs sit side by side, never mixed. Records of one dataset id made on different contents
 (another version of the data) or with different presets (budgets) are never mixed either:
@@ -72,7 +76,22 @@ def check_consistent(records: Iterable[tuple[Path, RecordV1]]) -> None:
             )
 
 
+def _stopped_by(record: RecordV1) -> str:
+    """Why the training stopped, also for records from before `stopped_by` was recorded
+    (all paper protocol: early means its overfitting rule, else the epoch cap)."""
+    found = getattr(record.training, "stopped_by", None)
+    if found:
+        return str(found)
+    return "overfitting-rule" if record.training.stopped_early else "epoch-cap"
+
+
+def protocol_of(record: RecordV1) -> str:
+    config = getattr(record.training, "config", None)
+    return str(config.protocol) if config is not None else "paper"
+
+
 def _flat(record: RecordV1) -> dict:
+    steps = getattr(record.training, "steps", None)
     row = {
         "robot": record.robot,
         "split": record.split,
@@ -82,8 +101,11 @@ def _flat(record: RecordV1) -> dict:
         "seed": record.seed,
         "dataset": record.dataset.id,
         "preset": record.dataset.preset,
+        "protocol": protocol_of(record),
         "parameters": record.model.parameters,
         "epochs": float(record.training.epochs),
+        "steps": float(steps) if steps is not None else np.nan,
+        "stopped_by": _stopped_by(record),
     }
     for (evaluator, metric), column in COLUMNS.items():
         value = record.metrics.get(evaluator, {}).get(metric)
@@ -96,15 +118,18 @@ def aggregate(records: list[tuple[Path, RecordV1]]) -> pd.DataFrame:
     ranked within each dataset and split; the dataset's robot and preset are columns too."""
     check_consistent(records)
     runs = pd.DataFrame([_flat(r) for _, r in records])
-    duplicate = runs.duplicated(["dataset", "split", "model", "variant", "backend", "seed"])
+    duplicate = runs.duplicated(
+        ["dataset", "protocol", "split", "model", "variant", "backend", "seed"]
+    )
     if duplicate.any():
         first = runs[duplicate].iloc[0]
         raise SymbenchError(
-            f"two records for the same run: {first['dataset']} {first['split']} "
+            f"two records for the same run: {first['dataset']} {first['protocol']} "
+            f"{first['split']} "
             f"{first['model']} {first['variant']} {first['backend']} seed {first['seed']}"
         )
     # robot and preset follow from the dataset (one content, one preset per id)
-    keys = ["robot", "dataset", "preset", "split", "model", "variant", "backend"]
+    keys = ["robot", "dataset", "preset", "protocol", "split", "model", "variant", "backend"]
     missing = runs.rmse_Nm.isna()
     if missing.any():
         names = ", ".join(sorted(str(p.name) for (p, _), m in zip(records, missing) if m)[:5])
@@ -112,19 +137,32 @@ def aggregate(records: list[tuple[Path, RecordV1]]) -> pd.DataFrame:
             f"records without a torque-error RMSE cannot be ranked ({names}); "
             "run them with the torque-error evaluator"
         )
-    # epochs show when the stopping rule ended a training early (an under-trained model)
+    # epochs, steps and the stop reason show how long each model trained and why it ended
     metrics = [c for c in COLUMNS.values() if runs[c].notna().any()] + ["epochs"]
+    metrics += ["steps"] if runs.steps.notna().any() else []
     grouped = runs.groupby(keys, sort=True)
-    table = grouped.agg(seeds=("seed", "nunique"), parameters=("parameters", "first"))
+    table = grouped.agg(
+        seeds=("seed", "nunique"),
+        parameters=("parameters", "first"),
+        stopped_by=("stopped_by", _counts),
+    )
     for m in metrics:
         table[f"{m}_mean"] = grouped[m].mean()
         table[f"{m}_std"] = grouped[m].std(ddof=1)
     table = table.reset_index()
     table["rank"] = (
-        table.groupby(["dataset", "split"])["rmse_Nm_mean"].rank(method="min").astype(int)
+        table.groupby(["dataset", "protocol", "split"])["rmse_Nm_mean"]
+        .rank(method="min")
+        .astype(int)
     )
-    order = ["robot", "dataset", "split", "rank", "model", "variant", "backend"]
+    order = ["robot", "dataset", "protocol", "split", "rank", "model", "variant", "backend"]
     return table.sort_values(order).reset_index(drop=True)
+
+
+def _counts(reasons: pd.Series) -> str:
+    """'overfitting-rule 2, epoch-cap 1': why the seeds' trainings stopped."""
+    counts = reasons.value_counts()
+    return ", ".join(f"{r} {counts[r]}" for r in sorted(counts.index))
 
 
 def _cell(mean: float, std: float) -> str:
@@ -138,10 +176,10 @@ def markdown(table: pd.DataFrame, robot: str) -> str:
     RMSE."""
     metrics = [c[: -len("_mean")] for c in table.columns if c.endswith("_mean")]
     lines = [f"# {robot}", ""]
-    for (did, preset), data in table[table.robot == robot].groupby(
-        ["dataset", "preset"], sort=True
+    for (did, preset, protocol), data in table[table.robot == robot].groupby(
+        ["dataset", "preset", "protocol"], sort=True
     ):
-        lines += [f"## Dataset {did}, preset {preset}", ""]
+        lines += [f"## Dataset {did}, preset {preset}, {protocol} protocol", ""]
         lines += _split_tables(data, metrics)
     return "\n".join(lines)
 
@@ -152,15 +190,19 @@ def _split_tables(table: pd.DataFrame, metrics: list[str]) -> list[str]:
         lines += [
             f"### {split}",
             "",
-            "| rank | model | variant | backend | seeds | " + " | ".join(metrics) + " |",
-            "|---|---|---|---|---|" + "---|" * len(metrics),
+            "| rank | model | variant | backend | seeds | parameters | "
+            + " | ".join(metrics)
+            + " | stopped by |",
+            "|---|---|---|---|---|---|" + "---|" * len(metrics) + "---|",
         ]
         for _, row in part.iterrows():
             cells = [_cell(row[f"{m}_mean"], row[f"{m}_std"]) for m in metrics]
             flag = "" if row.seeds >= MIN_SEEDS else f" (<{MIN_SEEDS})"
             lines.append(
                 f"| {row['rank']} | {row.model} | {row.variant} | {row.backend} "
-                f"| {row.seeds}{flag} | " + " | ".join(cells) + " |"
+                f"| {row.seeds}{flag} | {row.parameters} | "
+                + " | ".join(cells)
+                + f" | {row.stopped_by} |"
             )
         lines.append("")
     return lines
@@ -177,12 +219,13 @@ def sample_efficiency_plot(table: pd.DataFrame, robot: str, path: Path) -> bool:
     rows = rows[fractions | (rows.split == "iid")]
     rows["fraction"] = rows.split.str.removeprefix("fraction-").replace("iid", "1").astype(float)
     several = rows.dataset.nunique() > 1
+    protocols = rows.protocol.nunique() > 1
     curves = {}
-    for (did, model, variant, backend), part in rows.groupby(
-        ["dataset", "model", "variant", "backend"], sort=True
+    for (did, protocol, model, variant, backend), part in rows.groupby(
+        ["dataset", "protocol", "model", "variant", "backend"], sort=True
     ):
         part = part.sort_values("fraction")
-        on = f", {did}" if several else ""
+        on = (f", {did}" if several else "") + (f", {protocol}" if protocols else "")
         curves[f"{model} ({variant}, {backend}{on})"] = (
             part.fraction.tolist(),
             part.rmse_Nm_mean.tolist(),

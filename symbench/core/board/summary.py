@@ -91,8 +91,8 @@ def closed_loop_section(table: pd.DataFrame) -> list[str]:
 
 
 def headline(table: pd.DataFrame) -> str:
-    """The Markdown of summary.md from an aggregated table (see `leaderboard.aggregate`)."""
-    table = table.assign(label=_labels(table))
+    """The Markdown of summary.md from an aggregated table (see `leaderboard.aggregate`):
+    the sections once per training protocol, never mixing them."""
     seeds = sorted(int(s) for s in table.seeds.unique())
     lines = [
         "# Leaderboard summary",
@@ -101,10 +101,14 @@ def headline(table: pd.DataFrame) -> str:
         "split is by mean test RMSE; the per-robot pages have every metric.",
         "",
     ]
-    rmse = error_section(table, "rmse_Nm", "Test torque RMSE (N m), mean ± std over seeds")
-    nrmse = error_section(
-        table,
-        "nrmse",
-        "Normalized test RMSE (RMSE / std of the test torques), comparable across robots",
-    )
-    return "\n".join(lines + rmse + nrmse + closed_loop_section(table))
+    for protocol, part in table.groupby("protocol", sort=True):
+        part = part.assign(label=_labels(part))
+        lines += [f"# Trained under the {protocol} protocol", ""]
+        lines += error_section(part, "rmse_Nm", "Test torque RMSE (N m), mean ± std over seeds")
+        lines += error_section(
+            part,
+            "nrmse",
+            "Normalized test RMSE (RMSE / std of the test torques), comparable across robots",
+        )
+        lines += closed_loop_section(part)
+    return "\n".join(lines)

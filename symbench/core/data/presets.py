@@ -85,9 +85,12 @@ class ScenarioGrid:
 
 @dataclass(frozen=True)
 class Training:
-    """The training budget of a run."""
+    """The training budgets of a run, per protocol (symbench.core.training.loop)."""
 
-    max_epochs: int  # the cap (the stopping rule usually ends earlier; `--max-epochs` overrides)
+    max_steps: int  # converge: gradient steps, for every model and fraction (`--max-steps`)
+    eval_every: int  # converge: gradient steps between validation checks
+    patience: int  # converge: checks without a better validation loss before it stops
+    max_epochs: int  # paper: the epoch cap (its rule usually ends earlier; `--max-epochs`)
 
 
 @dataclass(frozen=True)
@@ -181,7 +184,7 @@ SMOKE = Preset(
     "smoke",
     "a few one-second trajectories, for tests (seconds)",
     _SMOKE_GRID,
-    Training(max_epochs=3),
+    Training(max_steps=30, eval_every=10, patience=2, max_epochs=3),
     _EVALUATION,
     ClosedLoop(1.0, 2, _PD_FRACTIONS, 0.1, train_preset="smoke-noisy"),
     _FRACTIONS,
@@ -190,7 +193,7 @@ SMALL = Preset(
     "small",
     "the default of `symbench run`: minutes on a laptop",
     _SMALL_GRID,
-    Training(max_epochs=60),
+    Training(max_steps=10000, eval_every=500, patience=6, max_epochs=60),
     _EVALUATION,
     ClosedLoop(2.6, 6, _PD_FRACTIONS, 0.1, train_preset="small-noisy"),
     _FRACTIONS,
@@ -207,7 +210,7 @@ PAPER = Preset(
         seeds=(0,),
         seconds=10.0,
     ),
-    Training(max_epochs=500),
+    Training(max_steps=200000, eval_every=2000, patience=10, max_epochs=500),
     _EVALUATION,
     ClosedLoop(10.0, 8, _PD_FRACTIONS, 0.1),
     _FRACTIONS,

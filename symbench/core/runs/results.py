@@ -108,10 +108,16 @@ class TrainingInfoV1(_Strict):
 
 
 class TrainingConfig(_Strict):
-    """The `TrainConfig` a run used, defaults resolved (everything but the progress bar)."""
+    """The `TrainConfig` a run used, defaults resolved (everything but the progress bar).
+    Records from before the `converge` protocol hold no protocol: they were trained under
+    the paper's rule, and read so."""
 
     seed: int
     batch_size: int = Field(ge=1)
+    protocol: Literal["converge", "paper"] = "paper"
+    max_steps: int | None = Field(default=None, ge=1)
+    eval_every: int | None = Field(default=None, ge=1)
+    patience: int | None = Field(default=None, ge=1)
     max_epochs: int = Field(ge=1)
     stop_ratio: float
     stop_patience: int = Field(ge=1)
@@ -121,6 +127,15 @@ class TrainingConfig(_Strict):
 
 
 class TrainingInfo(TrainingInfoV1):
+    """`epochs`: full passes over the training data; `best_epoch`: the validation check of
+    the kept parameters (an epoch under `paper`); `steps`: gradient steps; `stopped_by`:
+    patience or budget (converge), overfitting-rule or epoch-cap (paper). Records from
+    before these fields leave them out."""
+
+    stopped_by: Literal["patience", "budget", "overfitting-rule", "epoch-cap"] | None = None
+    stop_reason: str | None = None
+    steps: int | None = Field(default=None, ge=0)
+    best_step: int | None = Field(default=None, ge=0)
     config: TrainingConfig
     checkpoint_sha256: dict[str, Sha256] = Field(
         min_length=1, description="file name -> SHA-256 of the best checkpoint's files"

@@ -23,6 +23,7 @@ from symbench.core.runs.runner import (
     DEFAULT_EVALUATORS,
     FIRST_RESULT_EVALUATORS,
     RunSpec,
+    budget_text,
     check_names,
     default_preset,
     resolve_robot,
@@ -109,7 +110,23 @@ from symbench.core.runs.runner import run as run_spec
     type=WORKERS,
     help="Worker processes at once, simulating the dataset when it is missing.",
 )
-@click.option("--max-epochs", type=EPOCHS, default=None, help="Override the preset's epoch cap.")
+@click.option(
+    "--protocol",
+    type=click.Choice(["converge", "paper"]),
+    default="converge",
+    show_default=True,
+    help="Training protocol: converge (early stopping on validation loss within a budget of "
+    "gradient steps, the same for every model) or paper (the paper's overfitting rule).",
+)
+@click.option(
+    "--max-steps",
+    type=EPOCHS,
+    default=None,
+    help="Override the preset's budget of gradient steps (converge).",
+)
+@click.option(
+    "--max-epochs", type=EPOCHS, default=None, help="Override the preset's epoch cap (paper)."
+)
 @click.option(
     "--overwrite",
     is_flag=True,
@@ -131,6 +148,8 @@ def run(
     full: bool,
     output: Path,
     workers: int,
+    protocol: str,
+    max_steps: int | None,
     max_epochs: int | None,
     overwrite: bool,
 ) -> None:
@@ -163,6 +182,8 @@ def run(
         evaluators=tuple(evaluators),
         output=output,
         workers=workers,
+        protocol=protocol,
+        max_steps=max_steps,
         max_epochs=max_epochs,
         dataset=dataset,
         overwrite=overwrite,
@@ -175,8 +196,7 @@ def run(
 
     console.print(
         f"{model_name} on {spec.dataset_id} ({robot_name}, preset {preset}): dataset, one "
-        "training (at most "
-        f"{train_config(spec).max_epochs} epochs), then {', '.join(evaluators)}"
+        f"training ({budget_text(train_config(spec))}), then {', '.join(evaluators)}"
     )
     record = run_spec(spec, on_stage=announce)
     console.print(metrics_table(record))
@@ -186,10 +206,12 @@ def run(
 def metrics_table(record: ResultRecord) -> Table:
     """The record's scalar metrics, one row each; a skipped evaluator (or split) shows its
     one-line reason."""
-    m = record.model
+    m, t = record.model, record.training
     table = Table(
         title=f"{m.name} ({m.backend}) on {record.dataset.id}, split {record.split}, "
-        f"seed {record.seed}, {record.samples.train} training samples"
+        f"seed {record.seed}, {record.samples.train} training samples",
+        caption=f"{m.parameters} parameters; {t.config.protocol} protocol: {t.steps} steps "
+        f"({t.epochs} epochs), best at step {t.best_step}; stopped: {t.stop_reason}",
     )
     table.add_column("evaluator")
     table.add_column("metric")

@@ -72,9 +72,11 @@ class RunSpec:
     output: Path = Path("results")
     workers: int = 2
     progress: bool = True
-    max_epochs: int | None = None  # None: the preset's cap
+    protocol: str = "converge"  # the training protocol (symbench.core.training.loop)
+    max_steps: int | None = None  # None: the preset's budget (converge)
+    max_epochs: int | None = None  # None: the preset's cap (paper)
     # TrainConfig fields replacing the protocol's defaults (`symbench verify` replays a
-    # record's); seed, max_epochs and progress always come from the fields above
+    # record's); seed, protocol, budgets and progress always come from the fields above
     train_config: dict[str, Any] = field(default_factory=dict)
     dataset: str | None = None  # a cached dataset id; None: the robot's standard one (preset's)
     overwrite: bool = False  # replace a record of another configuration at `record_path`
@@ -176,18 +178,38 @@ def resolve_robot(robot: str | None, did: str) -> str:
 
 
 def train_config(spec: RunSpec) -> TrainConfig:
-    """The run's training configuration (checked: seed, epoch cap, ...)."""
+    """The run's training configuration: the protocol with the preset's budgets (checked:
+    seed, budgets, ...). A budget of the other protocol is refused, not ignored."""
     from symbench.core.training.loop import TrainConfig
 
-    cap = preset(spec.preset).training.max_epochs
-    max_epochs = cap if spec.max_epochs is None else spec.max_epochs
+    budget = preset(spec.preset).training
+    other = {"converge": ("max_epochs", "--max-epochs"), "paper": ("max_steps", "--max-steps")}
+    if spec.protocol in other and getattr(spec, other[spec.protocol][0]) is not None:
+        raise SymbenchError(
+            f"{other[spec.protocol][1]} is a budget of the other protocol, not of "
+            f"'{spec.protocol}' (converge: --max-steps; paper: --max-epochs)"
+        )
     return TrainConfig(
         **{
+            "eval_every": budget.eval_every,
+            "patience": budget.patience,
             **spec.train_config,
             "seed": spec.seed,
             "progress": spec.progress,
-            "max_epochs": max_epochs,
+            "protocol": spec.protocol,
+            "max_steps": budget.max_steps if spec.max_steps is None else spec.max_steps,
+            "max_epochs": budget.max_epochs if spec.max_epochs is None else spec.max_epochs,
         }
+    )
+
+
+def budget_text(config: TrainConfig) -> str:
+    """The training's budget in words, for plans and tables."""
+    if config.protocol == "paper":
+        return f"paper protocol, at most {config.max_epochs} epochs"
+    return (
+        f"converge protocol, at most {config.max_steps} steps, patience "
+        f"{config.patience} x {config.eval_every} steps"
     )
 
 
@@ -387,7 +409,9 @@ def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> 
     )
     # evaluators retrain inside their own time: report each second once
     timer.timings["evaluation_s"] -= timer.timings.get("retraining_s", 0.0)
-    epochs = len(model.history["train_loss"])
+    per_epoch = len(train_set) // min(config.batch_size, len(train_set))  # batches per pass
+    paper = config.protocol == "paper"
+    epochs = len(model.history["train_loss"]) if paper else model.steps // per_epoch
     record = RecordBody(
         created=datetime.now(UTC).isoformat(timespec="seconds"),
         model=ModelInfo.model_validate(
@@ -428,7 +452,11 @@ def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> 
             {
                 "epochs": epochs,
                 "best_epoch": model.best_epoch,
-                "stopped_early": epochs < config.max_epochs,
+                "stopped_early": model.stopped_by in ("patience", "overfitting-rule"),
+                "stopped_by": model.stopped_by,
+                "stop_reason": model.stopped,
+                "steps": model.steps,
+                "best_step": model.best_step,
                 "best_val_loss": float(min(model.history["val_loss"])),
                 "batch_size": config.batch_size,
                 "config": recorded_config(config, entry),

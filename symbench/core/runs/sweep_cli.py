@@ -74,6 +74,13 @@ from symbench.core.runs.runner import DEFAULT_EVALUATORS, RunSpec, default_prese
     "with a noisy preset, the closed-loop evaluator then judges the run's own model).",
 )
 @click.option(
+    "--protocol",
+    type=click.Choice(["converge", "paper"]),
+    default="converge",
+    show_default=True,
+    help="Training protocol of every run (see `symbench run`).",
+)
+@click.option(
     "--evaluators", default=",".join(DEFAULT_EVALUATORS), show_default=True, type=CommaList()
 )
 @click.option("--output", type=WritableFolder(), default=Path("results"), show_default=True)
@@ -109,6 +116,7 @@ def sweep(
     backends: list[str],
     preset: str | None,
     variant: str | None,
+    protocol: str,
     evaluators: list[str],
     output: Path,
     workers: int,
@@ -133,6 +141,7 @@ def sweep(
         robot="",
         preset=preset or "small",
         variant=variant,
+        protocol=protocol,
         evaluators=tuple(evaluators),
         output=output,
         workers=workers,

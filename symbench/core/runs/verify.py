@@ -129,9 +129,12 @@ def replay_spec(record: ResultRecord, output: Path, workers: int) -> RunSpec:
         output=output,
         workers=workers,
         progress=False,
-        max_epochs=config.max_epochs,
+        protocol=config.protocol,
+        max_steps=config.max_steps if config.protocol == "converge" else None,
+        max_epochs=config.max_epochs if config.protocol == "paper" else None,
         train_config={
             "batch_size": config.batch_size,
+            **{k: getattr(config, k) for k in ("eval_every", "patience") if getattr(config, k)},
             "stop_ratio": config.stop_ratio,
             "stop_patience": config.stop_patience,
             "learning_rate": config.learning_rate,

@@ -1,11 +1,23 @@
-"""One training protocol for every model and backend (docs/concepts.md, Training).
+"""The training protocols, the same for every model and backend (docs/concepts.md, Training).
 
-Adam, batch 64, the model's learning rate, MSE on normalized targets; stop when
-`stop_ratio` x validation loss exceeds the training loss `stop_patience` epochs in a row,
-or at `max_epochs`; keep the parameters with the best validation loss. Everything random
-(initialization, batch order) derives from the seed, and the batch order of epoch k depends
-on (seed, k) only, so a training resumed from its last checkpoint continues exactly as if it
-had never stopped. The checkpoint folder, and what a resumed run may trust, is `resume`'s.
+Both: Adam, batch 64, the model's learning rate, MSE on normalized targets, validation on
+trajectories held out of the training side, and the parameters with the best validation
+loss kept. They differ in when training stops:
+
+- `converge` (the default): a budget of `max_steps` gradient steps, the same for every model
+  and every training fraction; the validation loss is checked every `eval_every` steps, and
+  training stops early when it has not improved for `patience` checks in a row. Every model
+  thus trains until it stops improving on data like its training data, or up to the budget.
+- `paper`: the paper's rule, one check per epoch; stop when `stop_ratio` x validation loss
+  exceeds the training loss `stop_patience` epochs in a row, or at `max_epochs`. It stops any
+  model whose validation data is harder than its training data (what a model that lacks the
+  robot's symmetry always sees), and a smaller training fraction gets fewer updates.
+
+Everything random (initialization, batch order) derives from the seed: the batch order of
+data pass k depends on (seed, k) only, and gradient step s is batch s mod (batches per
+pass) of pass s div (batches per pass), so a training resumed from its last checkpoint
+continues exactly as if it had never stopped. The checkpoint folder, and what a resumed run
+may trust, is `resume`'s.
 """
 
 from __future__ import annotations
@@ -36,14 +48,22 @@ from symbench.core.training.backends import get_backend
 from symbench.core.training.normalization import Normalizer
 from symbench.core.training.trained_model import TrainedModel
 
+PROTOCOLS = ("converge", "paper")
+# why a training stopped, by protocol: the table's `stopped_by` column
+STOPPED_BY = ("patience", "budget", "overfitting-rule", "epoch-cap")
+
 
 @dataclass(frozen=True)
 class TrainConfig:
     seed: int = 0
     batch_size: int = 64
-    max_epochs: int = 200
-    stop_ratio: float = 0.7
-    stop_patience: int = 5
+    protocol: str = "converge"
+    max_steps: int = 10000  # converge: the budget in gradient steps
+    eval_every: int = 500  # converge: steps between validation checks
+    patience: int = 6  # converge: checks without improvement before stopping
+    max_epochs: int = 200  # paper: the epoch cap
+    stop_ratio: float = 0.7  # paper
+    stop_patience: int = 5  # paper
     learning_rate: float | None = None  # None: the model entry's learning rate
     hyper: dict[str, Any] = field(default_factory=dict)  # network sizes, passed to build
     compile: bool | None = None  # None: the backend's faster default (see `bench models`)
@@ -51,7 +71,12 @@ class TrainConfig:
 
     def __post_init__(self) -> None:
         check_seed(self.seed, "TrainConfig.seed")
-        for name in ("batch_size", "max_epochs", "stop_patience"):
+        if self.protocol not in PROTOCOLS:
+            raise SymbenchError(
+                f"unknown training protocol '{self.protocol}' ({', '.join(PROTOCOLS)})"
+            )
+        counts = ("batch_size", "max_steps", "eval_every", "patience", "max_epochs")
+        for name in (*counts, "stop_patience"):
             if getattr(self, name) < 1:
                 raise SymbenchError(
                     f"TrainConfig.{name} must be at least 1, got {getattr(self, name)}"
@@ -73,7 +98,9 @@ class TrainConfig:
 
 @dataclass
 class _Progress:
-    """What the resume checkpoint records besides the parameters and optimizer state."""
+    """What the resume checkpoint records besides the parameters and optimizer state.
+    `epoch` counts validation checks (one per epoch under `paper`), `best_epoch` is the
+    check of the best parameters."""
 
     epoch: int = 0
     train_loss: list[float] = field(default_factory=list)
@@ -81,6 +108,9 @@ class _Progress:
     best_epoch: int = -1
     strikes: int = 0
     stopped: str = ""
+    steps: int = 0  # gradient steps taken
+    best_step: int = 0  # gradient steps taken when the best parameters were
+    stopped_by: str = ""  # one of STOPPED_BY once stopped
 
     @property
     def best_val(self) -> float:
@@ -93,6 +123,19 @@ def batch_order(n: int, batch_size: int, seed: int, epoch: int) -> np.ndarray:
     perm = np.random.default_rng([seed, epoch]).permutation(n)
     n_batches = n // batch
     return perm[: n_batches * batch].reshape(n_batches, batch)
+
+
+def round_batches(n: int, config: TrainConfig, state: _Progress) -> np.ndarray:
+    """The batches between this validation check and the next: one epoch under `paper`;
+    under `converge` the next `eval_every` gradient steps (at most up to the budget) of the
+    stream of epochs, so a check may fall in the middle of one."""
+    if config.protocol == "paper":
+        return batch_order(n, config.batch_size, config.seed, state.epoch)
+    per_epoch = n // min(config.batch_size, n)
+    steps = range(state.steps, min(state.steps + config.eval_every, config.max_steps))
+    epochs = {s // per_epoch for s in steps}
+    orders = {e: batch_order(n, config.batch_size, config.seed, e) for e in epochs}
+    return np.stack([orders[s // per_epoch][s % per_epoch] for s in steps])
 
 
 def train(
@@ -131,6 +174,9 @@ def train(
             state.best_epoch,
             config.to_dict(),
             state.stopped,
+            state.stopped_by,
+            state.steps,
+            state.best_step,
         )
 
     resumed = _resume(Path(checkpoint_dir), identity, trainer, config) if checkpoint_dir else None
@@ -141,15 +187,14 @@ def train(
     with _progress_bar(config, entry) as bar:
         task = bar.add_task(
             "train",
-            total=config.max_epochs,
-            completed=state.epoch,
+            total=_bar_total(config, len(train)),
+            completed=state.steps,
             loss="",
             name=f"{entry.name}/{entry.backend}",
         )
         while not state.stopped:
-            train_loss = trainer.train_epoch(
-                batch_order(len(train), config.batch_size, config.seed, state.epoch)
-            )
+            batches = round_batches(len(train), config, state)
+            train_loss = trainer.train_epoch(batches)
             val_loss = trainer.val_loss()
             if not (math.isfinite(train_loss) and math.isfinite(val_loss)):
                 raise SymbenchError(
@@ -158,31 +203,62 @@ def train(
                     "lower the learning rate"
                 )
             state.train_loss.append(train_loss)
+            state.steps += len(batches)
+            improved = val_loss < state.best_val
             state.val_loss.append(val_loss)
-            if val_loss < state.best_val:
-                state.best_epoch, best = state.epoch, trainer.params()
-            state.strikes = state.strikes + 1 if config.stop_ratio * val_loss > train_loss else 0
+            if improved:
+                state.best_epoch, state.best_step, best = state.epoch, state.steps, trainer.params()
+            state.strikes = _strikes(state, config, improved, train_loss, val_loss)
             state.epoch += 1
-            state.stopped = _stop_reason(state, config)
+            state.stopped_by, state.stopped = _stop_reason(state, config)
             if checkpoint_dir is not None:
                 _save(Path(checkpoint_dir), identity, state, trainer, result())
             bar.update(
                 task,
-                completed=state.epoch,
+                completed=state.steps,
                 loss=f"train {train_loss:.4g}  val {val_loss:.4g}  best {state.best_val:.4g}",
             )
     return result()
 
 
-def _stop_reason(state: _Progress, config: TrainConfig) -> str:
+def _strikes(
+    state: _Progress, config: TrainConfig, improved: bool, train_loss: float, val_loss: float
+) -> int:
+    """Checks in a row that count towards stopping: without improvement (`converge`), or
+    with `stop_ratio` x validation loss above the training loss (`paper`)."""
+    if config.protocol == "converge":
+        strike = not improved
+    else:
+        strike = config.stop_ratio * val_loss > train_loss
+    return state.strikes + 1 if strike else 0
+
+
+def _stop_reason(state: _Progress, config: TrainConfig) -> tuple[str, str]:
+    """(one of STOPPED_BY, a sentence) once the protocol says stop, else ("", "")."""
+    if config.protocol == "converge":
+        if state.strikes >= config.patience:
+            return "patience", (
+                f"validation loss did not improve for {config.patience} checks "
+                f"({config.patience * config.eval_every} steps)"
+            )
+        if state.steps >= config.max_steps:
+            return "budget", f"reached the budget of {config.max_steps} steps"
+        return "", ""
     if state.strikes >= config.stop_patience:
-        return (
+        return "overfitting-rule", (
             f"{config.stop_ratio} x validation loss exceeded the training loss "
             f"{config.stop_patience} epochs in a row"
         )
     if state.epoch >= config.max_epochs:
-        return f"reached max_epochs={config.max_epochs}"
-    return ""
+        return "epoch-cap", f"reached max_epochs={config.max_epochs}"
+    return "", ""
+
+
+def _bar_total(config: TrainConfig, n_train: int) -> int:
+    """The progress bar counts gradient steps, up to the budget or the epoch cap."""
+    if config.protocol == "converge":
+        return config.max_steps
+    return config.max_epochs * (n_train // min(config.batch_size, n_train))
 
 
 def _check_data(entry: ModelEntry, train: ViewArrays, val: ViewArrays) -> ModelDims:
@@ -209,7 +285,8 @@ def _identity(
 ) -> dict[str, Any]:
     """What a resume checkpoint must match: the same model, protocol and data (by content,
     so a regenerated dataset of the same size does not resume an old training)."""
-    cfg = {k: v for k, v in config.to_dict().items() if k != "max_epochs"}
+    budgets = ("max_epochs", "max_steps")  # a larger budget continues a finished run
+    cfg = {k: v for k, v in config.to_dict().items() if k not in budgets}
     return {
         "model": entry.name,
         "backend": entry.backend,
@@ -263,7 +340,7 @@ def _resume(folder: Path, identity: dict, trainer: Any, config: TrainConfig):
             "use a fresh checkpoint folder"
         )
     state = _Progress(**saved["progress"])
-    state.stopped = _stop_reason(state, config)  # a larger max_epochs continues a capped run
+    state.stopped_by, state.stopped = _stop_reason(state, config)  # a larger budget continues
     trainer.load_params(groups["params"])
     trainer.load_optimizer_state(groups["optimizer"])
     return state, groups["best"]
@@ -274,11 +351,11 @@ def _progress_bar(config: TrainConfig, entry: ModelEntry) -> Progress:
         TextColumn("{task.fields[name]}"),
         BarColumn(),
         MofNCompleteColumn(),
-        TextColumn("epochs"),
+        TextColumn("steps"),
         TextColumn("{task.fields[loss]}"),
         TimeElapsedColumn(),
         TextColumn("at most"),
-        TimeRemainingColumn(),  # from the epoch cap: early stopping only shortens it
+        TimeRemainingColumn(),  # from the budget: early stopping only shortens it
         disable=not config.progress,
         transient=False,
     )

@@ -36,10 +36,13 @@ class TrainedModel:
     hyper: dict[str, Any]
     normalizer: Normalizer
     params: dict[str, np.ndarray]
-    history: dict[str, list[float]]  # train_loss and val_loss per epoch (normalized MSE)
-    best_epoch: int
+    history: dict[str, list[float]]  # train_loss and val_loss per check (normalized MSE)
+    best_epoch: int  # the validation check of the best parameters (an epoch under `paper`)
     config: dict[str, Any]  # the TrainConfig as a dict
-    stopped: str = ""  # why training ended
+    stopped: str = ""  # why training ended, a sentence
+    stopped_by: str = ""  # why training ended: one of loop.STOPPED_BY
+    steps: int = 0  # gradient steps taken
+    best_step: int = 0  # gradient steps taken when the best parameters were
     _predictor: Predictor | None = field(default=None, repr=False, compare=False)
 
     @property
@@ -101,6 +104,9 @@ class TrainedModel:
             "history": self.history,
             "best_epoch": self.best_epoch,
             "stopped": self.stopped,
+            "stopped_by": self.stopped_by,
+            "steps": self.steps,
+            "best_step": self.best_step,
             "n_params": self.n_params,
             "symbench_version": __version__,
         }
@@ -156,4 +162,7 @@ class TrainedModel:
             d["best_epoch"],
             d["config"],
             d["stopped"],
+            d.get("stopped_by", ""),
+            d.get("steps", 0),
+            d.get("best_step", 0),
         )
