@@ -38,6 +38,7 @@ LAZY_COMMANDS: dict[str, str] = {
     "publish": "symbench.core.board.cli:publish",
     "sweep": "symbench.core.runs.sweep_cli:sweep",
     "verify": "symbench.core.runs.verify_cli:verify",
+    "tune": "symbench.core.runs.tune_cli:tune",
     "data": "symbench.core.data.cli:data",
     "presets": "symbench.core.data.presets_cli:presets",
     "check-equivariance": "symbench.testing.check_command:check_equivariance",
@@ -157,12 +158,13 @@ def rows_table(title: str, rows: list[dict], console: Console) -> Table:
     """One row per entry; on a terminal too narrow for that, one block of field/value lines
     per entry (long values wrap, names fold, nothing is cut off)."""
     columns = list(rows[0]) if rows else ["name"]
-    widths = {c: max([len(c), *(len(str(r.get(c, ""))) for r in rows)]) for c in columns}
+    rows = [{c: _shown(v) for c, v in r.items()} for r in rows]
+    widths = {c: max([len(c), *(len(r.get(c, "")) for r in rows)]) for c in columns}
     table = Table(title=title)
     for i, c in enumerate(columns):  # the first column (names) is never folded
         table.add_column(c, overflow="fold", min_width=widths[c] if i == 0 else None)
     for row in rows:
-        table.add_row(*(str(row.get(c, "")) for c in columns))
+        table.add_row(*(row.get(c, "") for c in columns))
     # the names in full, every other column at least 12 characters (or its longest value)
     needed = widths[columns[0]] + sum(min(12, widths[c]) for c in columns[1:])
     if needed + 3 * len(columns) + 1 <= console.width:
@@ -172,8 +174,13 @@ def rows_table(title: str, rows: list[dict], console: Console) -> Table:
     blocks.add_column("value", overflow="fold")
     for row in rows:
         for i, c in enumerate(columns):
-            blocks.add_row(c, str(row.get(c, "")), end_section=i == len(columns) - 1)
+            blocks.add_row(c, row.get(c, ""), end_section=i == len(columns) - 1)
     return blocks
+
+
+def _shown(value: object) -> str:
+    """A field as a table cell: lists (an entry's tuples) comma-separated."""
+    return ", ".join(map(str, value)) if isinstance(value, list) else str(value)
 
 
 @cli.command("plugins")

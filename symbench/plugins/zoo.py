@@ -22,6 +22,7 @@ class Architecture:
     equivariant: bool
     learning_rate: float
     description: str
+    widths: tuple[str, ...]  # the build keywords `symbench tune` scales together
 
 
 ARCHITECTURES = (
@@ -32,6 +33,7 @@ ARCHITECTURES = (
         False,
         1e-3,
         f"MLP ({FFNN.layers} x {FFNN.width}) on the stacked world-frame vector",
+        ("width",),
     ),
     Architecture(
         "ffnn-leg",
@@ -40,6 +42,7 @@ ARCHITECTURES = (
         False,
         1e-3,
         "the ffnn MLP on the flattened leg-grouped view",
+        ("width",),
     ),
     Architecture(
         "gnn",
@@ -48,6 +51,7 @@ ARCHITECTURES = (
         False,
         1e-3,
         f"typical graph network (bodies as nodes, joints as edges), {GNN.steps} steps",
+        ("edge", "node", "glob"),
     ),
     Architecture(
         "sdgnn",
@@ -56,6 +60,7 @@ ARCHITECTURES = (
         True,
         1e-3,
         f"symmetric graph network: base and feet as nodes, legs as edges, {SDGNN.steps} steps",
+        ("edge", "node", "glob"),
     ),
     Architecture(
         "sdnn",
@@ -64,6 +69,7 @@ ARCHITECTURES = (
         True,
         5e-4,
         f"shared per-leg MLPs, sum over legs, {SDNN.steps} processing steps",
+        ("latent",),
     ),
 )
 
@@ -79,6 +85,7 @@ def model_entries(backend: str, package: str, variant: str = "acc") -> list[Mode
             Lazy(f"{package}.{a.module}:build"),
             a.learning_rate,
             a.description,
+            a.widths,
         )
         for a in ARCHITECTURES
     ]

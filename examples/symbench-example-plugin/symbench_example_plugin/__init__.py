@@ -18,5 +18,6 @@ def symbench_models() -> list:
             build=Lazy("symbench_example_plugin.leg_attention:build"),
             learning_rate=5e-4,
             description="per-leg MLP, self-attention across legs, per-leg decoder",
+            widths=("latent",),  # what `symbench tune` scales (the heads must divide it)
         )
     ]

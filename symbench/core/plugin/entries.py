@@ -68,6 +68,9 @@ class ModelEntry:
 
     `build(dims, **hyper)` returns the backend's network; `equivariant` says whether the
     model claims equivariance under the robot's symmetry group (checked by the kit).
+    `widths` names the build keywords that set the network's width (integers with
+    defaults): `symbench tune` scales them together, and `--parameters` scales them to a
+    parameter count; empty, the network's size is not searched or matched.
     """
 
     name: str
@@ -78,6 +81,7 @@ class ModelEntry:
     build: Callable[..., Any]
     learning_rate: float = 1e-3
     description: str = ""
+    widths: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
         _check_name("model", self.name)
@@ -91,6 +95,11 @@ class ModelEntry:
         if isinstance(rate, bool) or not isinstance(rate, (int, float)) or not 0 < rate < 1:
             raise InvalidEntryError(
                 f"model '{self.name}': learning_rate must be a number in (0, 1), got {rate!r}"
+            )
+        if not isinstance(self.widths, tuple) or not all(isinstance(w, str) for w in self.widths):
+            raise InvalidEntryError(
+                f"model '{self.name}': widths must be a tuple of build keyword names, "
+                f"got {self.widths!r}"
             )
 
 
@@ -164,5 +173,7 @@ def describe(entry: Any) -> dict[str, Any]:
         value = getattr(entry, f.name)
         if callable(value):
             continue
-        out[f.name] = str(value) if isinstance(value, Path) else value
+        if isinstance(value, Path):
+            value = str(value)
+        out[f.name] = list(value) if isinstance(value, tuple) else value
     return out

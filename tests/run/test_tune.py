@@ -1,0 +1,94 @@
+"""`symbench tune`: learning rate x width on validation data only, resumable, for any model."""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+
+import pytest
+from cli_invoke import error_line, invoke
+
+from symbench.core.data import load_dataset
+from symbench.core.plugin import registry
+from symbench.core.runs import tune as tuning
+from symbench.core.runs.runner import RunSpec, train_config
+from symbench.core.training import loop
+
+RATES, SCALES = (1e-3, 3e-3), (0.5, 1.0)
+
+
+def spec(tmp_path, model="ffnn") -> RunSpec:
+    return RunSpec(model=model, robot="hexa", preset="smoke", evaluators=(), output=tmp_path)
+
+
+def test_every_grid_point_is_trained_and_scored_by_its_validation_loss(smoke_hexa, tmp_path):
+    run = spec(tmp_path)
+    summary = tuning.tune(run, RATES, SCALES, tmp_path, report=lambda _: None)
+    assert summary["complete"] and len(summary["trials"]) == 4
+    widths = sorted({(t["width_scale"], t["hyper"]["width"]) for t in summary["trials"]})
+    assert widths == [(0.5, 128), (1.0, 256)]  # ffnn's width 256, scaled
+    assert len({t["parameters"] for t in summary["trials"]}) == 2
+    best = min(summary["trials"], key=lambda t: t["best_val_loss"])
+    assert summary["best"] == best
+    # the score is the validation loss a plain training with those values reaches
+    entry = registry.model("ffnn", "torch")
+    dataset = load_dataset(smoke_hexa.dataset_id)
+    train_set, val_set, _ = dataset.split_views(entry.view, entry.variant, "iid", 0)
+    config = dataclasses.replace(
+        train_config(run), learning_rate=best["learning_rate"], hyper=best["hyper"]
+    )
+    again = loop.train(entry, train_set, val_set, dataclasses.replace(config, progress=False))
+    assert min(again.history["val_loss"]) == best["best_val_loss"]
+    written = json.loads(tuning.summary_path(tmp_path, run).read_text())
+    assert written["best"] == best and written["split"] == "iid"
+    assert "test trajectories never used" in written["scored_by"]
+
+
+def test_an_interrupted_search_resumes_without_retraining_finished_trials(
+    smoke_hexa, tmp_path, monkeypatch
+):
+    run, trained = spec(tmp_path), []
+    real_train = loop.train
+
+    def crashing_train(*args, **kwargs):
+        if len(trained) == 2:
+            raise KeyboardInterrupt  # as if stopped during the third trial
+        trained.append(args[3].learning_rate)
+        return real_train(*args, **kwargs)
+
+    monkeypatch.setattr(loop, "train", crashing_train)
+    with pytest.raises(KeyboardInterrupt):
+        tuning.tune(run, RATES, SCALES, tmp_path, report=lambda _: None)
+    partial = json.loads(tuning.summary_path(tmp_path, run).read_text())
+    assert len(partial["trials"]) == 2 and not partial["complete"]
+    monkeypatch.setattr(
+        loop, "train", lambda *a, **k: (trained.append(a[3]), real_train(*a, **k))[1]
+    )
+    summary = tuning.tune(run, RATES, SCALES, tmp_path, report=lambda _: None)
+    assert summary["complete"] and len(summary["trials"]) == 4
+    assert len(trained) == 4  # two before the crash, the two left after it
+
+
+def test_a_model_without_widths_searches_the_learning_rate_only(smoke_hexa, tmp_path, monkeypatch):
+    entry = registry.model("ffnn", "torch")
+    monkeypatch.setattr(tuning, "model_entry", lambda _: dataclasses.replace(entry, widths=()))
+    summary = tuning.tune(spec(tmp_path), RATES, SCALES, tmp_path, report=lambda _: None)
+    assert [(t["learning_rate"], t["width_scale"], t["hyper"]) for t in summary["trials"]] == [
+        (1e-3, 1.0, {}),
+        (3e-3, 1.0, {}),
+    ]
+
+
+def test_the_command_prints_the_trials_and_refuses_bad_values_in_one_line(smoke_hexa, tmp_path):
+    command = ("tune", "--model", "ffnn", "--robot", "hexa", "--preset", "smoke")
+    result = invoke(
+        *command, "--learning-rates", "0.001", "--width-scales", "1", "--output", tmp_path
+    )
+    assert result.exit_code == 0, result.output
+    assert "(best)" in result.stdout and "width 256" in result.stdout
+    assert "Invalid value for '--learning-rates'" in error_line(
+        invoke(*command, "--learning-rates", "0", "--output", tmp_path), 2
+    )
+    assert error_line(invoke("tune", "--model", "fnn", "--robot", "hexa"), 1).startswith(
+        "Error: unknown model 'fnn'"
+    )
