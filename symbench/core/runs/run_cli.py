@@ -128,6 +128,13 @@ from symbench.core.runs.runner import run as run_spec
     "--max-epochs", type=EPOCHS, default=None, help="Override the preset's epoch cap (paper)."
 )
 @click.option(
+    "--parameters",
+    type=EPOCHS,
+    default=None,
+    help="Scale the model's widths to the parameter count nearest this (compare models at "
+    "matched size).",
+)
+@click.option(
     "--overwrite",
     is_flag=True,
     help="Replace a record of another configuration at the record's path (refused otherwise).",
@@ -151,6 +158,7 @@ def run(
     protocol: str,
     max_steps: int | None,
     max_epochs: int | None,
+    parameters: int | None,
     overwrite: bool,
 ) -> None:
     """Train and evaluate MODEL on a robot's standard dataset (generated when missing) or on
@@ -185,6 +193,7 @@ def run(
         protocol=protocol,
         max_steps=max_steps,
         max_epochs=max_epochs,
+        parameters=parameters,
         dataset=dataset,
         overwrite=overwrite,
     )

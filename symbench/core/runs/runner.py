@@ -75,6 +75,7 @@ class RunSpec:
     protocol: str = "converge"  # the training protocol (symbench.core.training.loop)
     max_steps: int | None = None  # None: the preset's budget (converge)
     max_epochs: int | None = None  # None: the preset's cap (paper)
+    parameters: int | None = None  # the model's widths scaled to this parameter count
     # TrainConfig fields replacing the protocol's defaults (`symbench verify` replays a
     # record's); seed, protocol, budgets and progress always come from the fields above
     train_config: dict[str, Any] = field(default_factory=dict)
@@ -189,10 +190,12 @@ def train_config(spec: RunSpec) -> TrainConfig:
             f"{other[spec.protocol][1]} is a budget of the other protocol, not of "
             f"'{spec.protocol}' (converge: --max-steps; paper: --max-epochs)"
         )
+    matched = {"hyper": matched_size(spec)} if spec.parameters is not None else {}
     return TrainConfig(
         **{
             "eval_every": budget.eval_every,
             "patience": budget.patience,
+            **matched,
             **spec.train_config,
             "seed": spec.seed,
             "progress": spec.progress,
@@ -201,6 +204,19 @@ def train_config(spec: RunSpec) -> TrainConfig:
             "max_epochs": budget.max_epochs if spec.max_epochs is None else spec.max_epochs,
         }
     )
+
+
+def matched_size(spec: RunSpec) -> dict[str, int]:
+    """The width keywords that give the run's model `spec.parameters` parameters on the
+    robot's data (its view's shapes follow from the leg count)."""
+    from symbench.core.data.model_dims import dims_for
+    from symbench.core.robot.specs import load_robot
+    from symbench.core.training.sizes import matched_widths
+
+    assert spec.parameters is not None
+    entry = model_entry(spec)
+    dims = dims_for(entry.view, entry.variant, load_robot(spec.robot).n_legs)
+    return matched_widths(entry, dims, spec.parameters)
 
 
 def budget_text(config: TrainConfig) -> str:

@@ -81,6 +81,12 @@ from symbench.core.runs.runner import DEFAULT_EVALUATORS, RunSpec, default_prese
     help="Training protocol of every run (see `symbench run`).",
 )
 @click.option(
+    "--parameters",
+    type=click.IntRange(min=1),
+    default=None,
+    help="Scale every model's widths to the parameter count nearest this (matched size).",
+)
+@click.option(
     "--evaluators", default=",".join(DEFAULT_EVALUATORS), show_default=True, type=CommaList()
 )
 @click.option("--output", type=WritableFolder(), default=Path("results"), show_default=True)
@@ -117,6 +123,7 @@ def sweep(
     preset: str | None,
     variant: str | None,
     protocol: str,
+    parameters: int | None,
     evaluators: list[str],
     output: Path,
     workers: int,
@@ -142,6 +149,7 @@ def sweep(
         preset=preset or "small",
         variant=variant,
         protocol=protocol,
+        parameters=parameters,
         evaluators=tuple(evaluators),
         output=output,
         workers=workers,

@@ -20,10 +20,11 @@ from pathlib import Path
 from typing import Any
 
 from symbench.core.common.errors import SymbenchError
-from symbench.core.data.provenance import build_hyperparameters, git_commit
+from symbench.core.data.provenance import git_commit
 from symbench.core.plugin.entries import ModelEntry
 from symbench.core.runs.runner import RunSpec, ensure_dataset, model_entry, train_config
 from symbench.core.training.checkpoints import write_json
+from symbench.core.training.sizes import scaled_widths
 
 DEFAULT_RATE_FACTORS = (1 / 3, 1.0, 3.0)  # around the model's own learning rate
 DEFAULT_WIDTH_SCALES = (0.5, 1.0, 2.0)
@@ -40,18 +41,6 @@ class Trial:
     best_val_loss: float
     steps: int
     stopped_by: str
-
-
-def scaled_widths(entry: ModelEntry, scale: float) -> dict[str, int]:
-    """The model's width keywords at `scale` x their defaults (at least 1 each)."""
-    defaults = build_hyperparameters(entry, {})
-    missing = [w for w in entry.widths if not isinstance(defaults.get(w), int)]
-    if missing:
-        raise SymbenchError(
-            f"model '{entry.name}' names widths {', '.join(missing)} that its build function "
-            "has no integer default for"
-        )
-    return {w: max(1, round(defaults[w] * scale)) for w in entry.widths}
 
 
 def default_rates(entry: ModelEntry) -> tuple[float, ...]:

@@ -1,0 +1,69 @@
+"""A network's size through its width keywords (`ModelEntry.widths`): scaled together, or
+scaled to a parameter count, so that models can be compared at matched size.
+
+The width keywords are scaled by one factor from their defaults and rounded (at least 1),
+so the network keeps its proportions; the parameter count grows with the factor, and the
+factor whose count is nearest the target is found by doubling, then bisection, on the first
+width.
+"""
+
+from __future__ import annotations
+
+from symbench.core.common.errors import SymbenchError
+from symbench.core.data.model_dims import ModelDims
+from symbench.core.data.provenance import build_hyperparameters
+from symbench.core.plugin.entries import ModelEntry
+from symbench.core.training.backends import get_backend
+
+MAX_SCALE = 64  # the largest width factor tried when matching a parameter count
+
+
+def scaled_widths(entry: ModelEntry, scale: float) -> dict[str, int]:
+    """The model's width keywords at `scale` x their defaults (at least 1 each)."""
+    defaults = _width_defaults(entry)
+    return {w: max(1, round(d * scale)) for w, d in defaults.items()}
+
+
+def parameter_count(entry: ModelEntry, dims: ModelDims, hyper: dict[str, int]) -> int:
+    params = get_backend(entry.backend).init_params(entry, dims, hyper, 0)
+    return int(sum(v.size for v in params.values()))
+
+
+def matched_widths(entry: ModelEntry, dims: ModelDims, target: int) -> dict[str, int]:
+    """The width keywords whose network has the parameter count nearest `target`."""
+    if target < 1:
+        raise SymbenchError(f"a parameter count must be at least 1, got {target}")
+    if not entry.widths:
+        raise SymbenchError(
+            f"model '{entry.name}' declares no widths (ModelEntry.widths), so its size "
+            "cannot be matched to a parameter count"
+        )
+    first = _width_defaults(entry)[entry.widths[0]]
+
+    def sized(width: int) -> tuple[dict[str, int], int]:
+        hyper = scaled_widths(entry, width / first)
+        return hyper, parameter_count(entry, dims, hyper)
+
+    low, high = 1, first
+    while sized(high)[1] < target:  # doubling from the defaults: huge networks are never built
+        if high >= first * MAX_SCALE:
+            raise SymbenchError(
+                f"model '{entry.name}' stays below {target} parameters at {MAX_SCALE} x its widths"
+            )
+        low, high = high, 2 * high
+    while high - low > 1:  # the smallest first width whose count reaches the target
+        middle = (low + high) // 2
+        low, high = (middle, high) if sized(middle)[1] < target else (low, middle)
+    candidates = [sized(w) for w in (low, high)]
+    return min(candidates, key=lambda c: abs(c[1] - target))[0]
+
+
+def _width_defaults(entry: ModelEntry) -> dict[str, int]:
+    defaults = build_hyperparameters(entry, {})
+    missing = [w for w in entry.widths if not isinstance(defaults.get(w), int)]
+    if missing:
+        raise SymbenchError(
+            f"model '{entry.name}' names widths {', '.join(missing)} that its build function "
+            "has no integer default for"
+        )
+    return {w: defaults[w] for w in entry.widths}
