@@ -18,7 +18,9 @@ from collections.abc import Callable
 from dataclasses import dataclass, fields, replace
 from typing import Any, TypeVar
 
-from symbench import ModelDims
+import numpy as np
+
+from symbench import ModelDims, SymbenchError, schema
 
 LAYER_NORM_EPS = 1e-5
 """Epsilon of every LatentMLP's LayerNorm: torch's default, which flax's (1e-6) is not."""
@@ -34,11 +36,13 @@ class MLPSizes:
 
 @dataclass(frozen=True)
 class SDNNSizes:
-    """sdnn: per-leg MLPs of `mlp_layers` layers and `latent` units; `steps` processing steps."""
+    """sdnn: per-leg MLPs of `mlp_layers` layers and `latent` units; `steps` processing steps;
+    `mirror` 1 averages the network with its leg-mirrored image (`mirror_signs`)."""
 
     latent: int
     mlp_layers: int
     steps: int
+    mirror: int = 0
 
 
 @dataclass(frozen=True)
@@ -53,13 +57,42 @@ class GraphSizes:
     steps: int
 
 
+@dataclass(frozen=True)
+class SDGNNSizes(GraphSizes):
+    """sdgnn: a graph network's sizes, and `mirror` as sdnn's."""
+
+    mirror: int = 0
+
+
 FFNN = MLPSizes(width=256, layers=3)
 SDNN = SDNNSizes(latent=128, mlp_layers=2, steps=2)
 GNN = GraphSizes(edge=64, node=16, glob=16, mlp_layers=2, steps=5)
-SDGNN = GraphSizes(edge=64, node=16, glob=16, mlp_layers=2, steps=2)
+SDGNN = SDGNNSizes(edge=64, node=16, glob=16, mlp_layers=2, steps=2)
 
 
-Sizes = TypeVar("Sizes", MLPSizes, SDNNSizes, GraphSizes)
+def as_tuples(signs: tuple[np.ndarray, np.ndarray] | None) -> tuple | None:
+    """`mirror_signs` as nested tuples of floats: what a flax module may hold as a field."""
+    return None if signs is None else tuple(tuple(float(v) for v in s) for s in signs)
+
+
+Sizes = TypeVar("Sizes", MLPSizes, SDNNSizes, GraphSizes, SDGNNSizes)
+
+
+def mirror_signs(dims: ModelDims, mirror: int) -> tuple[np.ndarray, np.ndarray] | None:
+    """For `mirror` 1, the leg mirror's per-feature signs on a leg-grouped model's inputs and
+    torques (the schema's, float32); None for 0.
+
+    A network f that is equivariant to every permutation of legs becomes equivariant to the
+    robot's mirrors too as (f(x) + s_out f(s_in x)) / 2: a mirror relabels legs and flips
+    these signs in every leg, so the average is the same function of x and of its mirror
+    image. The network keeps its parameters; each call costs two passes (one batch of two).
+    """
+    if mirror not in (0, 1):
+        raise SymbenchError(f"mirror must be 0 or 1, got {mirror!r}")
+    if not mirror:
+        return None
+    inputs = schema.leg_grouped_input(dims.variant).reflection_signs
+    return np.asarray(inputs, np.float32), np.asarray(schema.TARGET.reflection_signs, np.float32)
 
 
 def builder(defaults: Sizes, make: Callable[[ModelDims, Sizes], Any]) -> Callable[..., Any]:

@@ -20,7 +20,13 @@ from symbench.testing.equivariance import (
     element_errors,
     relative_error,
 )
-from symbench.testing.groups import BUILTIN_ROBOTS, registered_robots, robot_group, robot_groups
+from symbench.testing.groups import (
+    BUILTIN_ROBOTS,
+    registered_robots,
+    robot_geometry_group,
+    robot_group,
+    robot_groups,
+)
 from symbench.testing.model_group import SymmetryGroupReport, measure_symmetry_group
 from symbench.testing.raw_states import (
     RawStates,
@@ -48,6 +54,7 @@ __all__ = [
     "regular_frames",
     "relative_error",
     "robot_frames",
+    "robot_geometry_group",
     "robot_group",
     "robot_groups",
     "synthetic_raw_states",

@@ -9,8 +9,11 @@ from rich.table import Table
 
 from symbench.core.common.cli_types import SEED
 from symbench.core.common.console import StdoutConsole
+from symbench.core.data.frames import LegFrames
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import BACKENDS
+from symbench.core.robot.specs import load_robot
+from symbench.core.symmetry.groups import LegGroup
 from symbench.testing.equivariance import EquivarianceReport, check_model
 from symbench.testing.model_group import measure_symmetry_group
 
@@ -36,6 +39,23 @@ from symbench.testing.model_group import measure_symmetry_group
     "--seed", default=0, show_default=True, type=SEED, help="Seed of parameters and inputs."
 )
 @click.option(
+    "--group",
+    "which_group",
+    type=click.Choice(["declared", "geometry"]),
+    default="declared",
+    show_default=True,
+    help="The robot's declared group, or its geometry group: the declared rotations with the "
+    "mirrors its geometry has (what `symbench sim check` verifies in simulation).",
+)
+@click.option(
+    "--size",
+    "sizes",
+    multiple=True,
+    metavar="NAME=INT",
+    help="A build keyword of the model, e.g. mirror=1 (sdnn, sdgnn: equivariant to mirrors "
+    "too); repeatable.",
+)
+@click.option(
     "--group-of-model",
     is_flag=True,
     help="Also measure the model's own symmetry group (the leg permutations it is "
@@ -50,6 +70,8 @@ def check_equivariance(
     backend: str,
     samples: int,
     seed: int,
+    which_group: str,
+    sizes: tuple[str, ...],
     group_of_model: bool,
     as_json: bool,
 ) -> None:
@@ -65,7 +87,16 @@ def check_equivariance(
         entries = entries or [registry.model(model_name)]  # raises, naming the closest models
     else:
         entries = [registry.model(model_name, backend)]
-    reports = [check_model(e, robot_name, n_samples=samples, seed=seed) for e in entries]
+    hyper = _sizes(sizes)
+    group: LegGroup | str = robot_name
+    frames = None
+    if which_group == "geometry":
+        spec = load_robot(robot_name)
+        group, frames = spec.geometry_group, LegFrames.from_spec(spec)
+    reports = [
+        check_model(e, group, n_samples=samples, seed=seed, hyper=hyper, frames=frames)
+        for e in entries
+    ]
     groups = [measure_symmetry_group(e, robot_name, seed=seed) for e in entries]
     groups = groups if group_of_model else []
     if as_json:
@@ -121,3 +152,14 @@ def _print(report: EquivarianceReport) -> None:
         )
     if report.controls:
         console.print(controls)
+
+
+def _sizes(pairs: tuple[str, ...]) -> dict[str, int]:
+    """NAME=INT pairs as build keywords; a malformed one is a usage error naming it."""
+    out = {}
+    for pair in pairs:
+        name, _, value = pair.partition("=")
+        if not name.isidentifier() or not value.lstrip("-").isdigit():
+            raise click.BadParameter(f"{pair!r} is not NAME=INT", param_hint="'--size'")
+        out[name] = int(value)
+    return out

@@ -284,10 +284,20 @@ def control_transforms(
     For every rotation other than the identity: the base turned but the legs not relabelled;
     the legs relabelled but the base turned the other way (only where that is a different
     turn: a half turn is its own inverse); the base turned but the legs relabelled one leg
-    too far."""
+    too far. For every mirror: the scene mirrored and the legs relabelled, but the legs'
+    coxa angles, velocities and torques left unflipped."""
     out = []
     for g in group:
-        if g.reflect or g == group.identity:
+        if g == group.identity:
+            continue
+        if g.reflect:
+            mirrored = raw_action.act_on_raw(g, raw, frames)
+            unflipped = raw_action.relabel_legs(
+                mirrored,
+                np.arange(group.n_legs),
+                np.asarray(schema.FeatureType.JOINT.reflection_signs),
+            )
+            out.append(("mirrored, coxa columns not flipped", g, unflipped))
             continue
         angle = raw_action.rotation_angle(frames, g)
         src = g.source_legs()

@@ -15,6 +15,14 @@ def robot_group(name: str) -> LegGroup:
     return load_robot(name).group
 
 
+def robot_geometry_group(name: str) -> LegGroup:
+    """The geometry group of the registered robot `name`: its declared rotations and the
+    mirrors its geometry has (check a model on it with `frames=robot_frames(name)`)."""
+    from symbench.core.robot.specs import load_robot
+
+    return load_robot(name).geometry_group
+
+
 def registered_robots() -> tuple[str, ...]:
     """Every registered robot, built-in and plugin, sorted by name."""
     from symbench.core.plugin import registry

@@ -30,7 +30,7 @@ BUILTIN_MODELS = sorted(
 LEGS = sorted({robot_group(robot).n_legs for robot in BUILTIN_ROBOTS})
 
 
-def torch_and_jax_outputs(name: str, n_legs: int) -> tuple[np.ndarray, np.ndarray]:
+def torch_and_jax_outputs(name: str, n_legs: int, **hyper) -> tuple[np.ndarray, np.ndarray]:
     """Outputs of the torch network and of its JAX twin holding the same weights."""
     import jax
     import torch
@@ -44,7 +44,7 @@ def torch_and_jax_outputs(name: str, n_legs: int) -> tuple[np.ndarray, np.ndarra
     }
 
     torch.manual_seed(0)
-    net_t = entry_t.build(dims).eval()
+    net_t = entry_t.build(dims, **hyper).eval()
     rng = np.random.default_rng(n_legs)
     params = {
         k: v.numpy() + 0.05 * rng.standard_normal(v.shape).astype(np.float32)
@@ -54,7 +54,7 @@ def torch_and_jax_outputs(name: str, n_legs: int) -> tuple[np.ndarray, np.ndarra
     with torch.no_grad():
         y_torch = net_t(**{k: torch.from_numpy(v) for k, v in inputs.items()}).numpy()
 
-    net_j = entry_j.build(dims)
+    net_j = entry_j.build(dims, **hyper)
     converted = torch_to_flax(params)
     expected = jax.eval_shape(net_j.init, jax.random.PRNGKey(0), **inputs)["params"]
     expected_shapes = {k: v.shape for k, v in traverse_util.flatten_dict(expected, sep="/").items()}
@@ -77,4 +77,13 @@ def test_torch_weights_give_the_same_outputs_in_jax(name, n_legs):
     y_torch, y_jax = torch_and_jax_outputs(name, n_legs)
     assert y_torch.shape == y_jax.shape == (32, n_legs, 3)
     assert np.abs(y_torch).max() > 0.1  # not a vanishing output that any network matches
+    np.testing.assert_allclose(y_jax, y_torch, rtol=0, atol=ATOL)
+
+
+@pytest.mark.parametrize("name", ["sdnn", "sdgnn"])
+def test_the_mirror_averaged_twins_agree(name):
+    """`mirror=1` (equivariant to the robot's mirrors too) computes the same in both."""
+    y_torch, y_jax = torch_and_jax_outputs(name, 6, mirror=1)
+    plain, _ = torch_and_jax_outputs(name, 6)
+    assert np.abs(y_torch - plain).max() > 1e-3  # the average is another function
     np.testing.assert_allclose(y_jax, y_torch, rtol=0, atol=ATOL)

@@ -63,3 +63,14 @@ class GraphNetwork(nn.Module):
                 jnp.concatenate([u, e.sum(1), v.sum(1)], -1)
             )
         return nn.Dense(self.n_out, name="out")(LatentMLP(self.edge, mlp, name="dec")(e))
+
+
+def mirror_average(x: jnp.ndarray, f, signs: tuple | None) -> jnp.ndarray:
+    """(f(x) + s_out f(s_in x)) / 2 in one batch (`architectures.mirror_signs`), f alone
+    without signs: the twin of the torch models' MirrorAverage."""
+    if signs is None:
+        return f(x)
+    n = x.shape[0]
+    s_in, s_out = (jnp.asarray(s, x.dtype) for s in signs)
+    y = f(jnp.concatenate([x, x * s_in]))
+    return 0.5 * (y[:n] + y[n:] * s_out)

@@ -10,17 +10,22 @@ import flax.linen as nn
 import jax.numpy as jnp
 
 from symbench.plugins.architectures import SDNN as DEFAULTS
-from symbench.plugins.architectures import builder
-from symbench.plugins.jax_models.layers import LatentMLP
+from symbench.plugins.architectures import as_tuples, builder, mirror_signs
+from symbench.plugins.jax_models.layers import LatentMLP, mirror_average
 
 
 class SDNN(nn.Module):
     latent: int
     mlp_layers: int
     steps: int
+    signs: tuple | None = None  # the leg mirror's (input, output) signs, as tuples
 
     @nn.compact
     def __call__(self, x: jnp.ndarray) -> jnp.ndarray:
+        return mirror_average(x, self.equivariant, self.signs)
+
+    def equivariant(self, x: jnp.ndarray) -> jnp.ndarray:
+        """The network itself: equivariant to every permutation of legs."""
         h = LatentMLP(self.latent, self.mlp_layers, name="enc")(x)
         for k in range(self.steps):
             total = jnp.broadcast_to(h.sum(axis=1, keepdims=True), h.shape)
@@ -31,4 +36,7 @@ class SDNN(nn.Module):
         return nn.Dense(3, name="out")(h)
 
 
-build = builder(DEFAULTS, lambda dims, s: SDNN(s.latent, s.mlp_layers, s.steps))
+build = builder(
+    DEFAULTS,
+    lambda dims, s: SDNN(s.latent, s.mlp_layers, s.steps, as_tuples(mirror_signs(dims, s.mirror))),
+)

@@ -26,6 +26,30 @@ class LatentMLP(nn.Module):
         return self.norm(x)
 
 
+class MirrorAverage(nn.Module):
+    """Averages a network with its leg-mirrored image, (f(x) + s_out f(s_in x)) / 2, both
+    passes in one batch (`architectures.mirror_signs`); without signs it is f itself. It has
+    no parameters and its sign buffers are not saved, so the network's checkpoint is the
+    same with or without it."""
+
+    s_in: torch.Tensor  # buffers: typed, or mypy reads them through Module.__getattr__
+    s_out: torch.Tensor
+
+    def __init__(self, signs: tuple[np.ndarray, np.ndarray] | None):
+        super().__init__()
+        self.on = signs is not None
+        if signs is not None:
+            self.register_buffer("s_in", torch.from_numpy(signs[0]), persistent=False)
+            self.register_buffer("s_out", torch.from_numpy(signs[1]), persistent=False)
+
+    def forward(self, x: torch.Tensor, f) -> torch.Tensor:
+        if not self.on:
+            return f(x)
+        n = x.shape[0]
+        y = f(torch.cat([x, x * self.s_in.to(x.dtype)]))
+        return 0.5 * (y[:n] + y[n:] * self.s_out.to(x.dtype))
+
+
 class GraphNetwork(nn.Module):
     """Encode-process-decode graph network (Battaglia et al. 2018) with sum aggregation.
 
