@@ -18,6 +18,7 @@ from symbench.core.common.cli_types import EPOCHS, SEED, WORKERS, CommaList, Wri
 from symbench.core.common.console import StdoutConsole
 from symbench.core.data.cli import split_option
 from symbench.core.data.presets import PRESETS
+from symbench.core.runs.options import protocol_option
 from symbench.core.runs.results import ResultRecord
 from symbench.core.runs.runner import (
     DEFAULT_EVALUATORS,
@@ -110,13 +111,9 @@ from symbench.core.runs.runner import run as run_spec
     type=WORKERS,
     help="Worker processes at once, simulating the dataset when it is missing.",
 )
-@click.option(
-    "--protocol",
-    type=click.Choice(["converge", "paper"]),
-    default="converge",
-    show_default=True,
-    help="Training protocol: converge (early stopping on validation loss within a budget of "
-    "gradient steps, the same for every model) or paper (the paper's overfitting rule).",
+@protocol_option(
+    "Training protocol: converge (early stopping on validation loss within a budget of "
+    "gradient steps, the same for every model) or paper (the paper's overfitting rule)."
 )
 @click.option(
     "--max-steps",

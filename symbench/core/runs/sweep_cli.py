@@ -12,6 +12,7 @@ from pathlib import Path
 import click
 
 from symbench.core.common.cli_types import SEED, WORKERS, CommaList, WritableFolder
+from symbench.core.runs.options import protocol_option
 from symbench.core.runs.runner import DEFAULT_EVALUATORS, RunSpec, default_preset
 
 
@@ -73,13 +74,7 @@ from symbench.core.runs.runner import DEFAULT_EVALUATORS, RunSpec, default_prese
     help="Input variant of every run (default: each model's; closed-loop control uses next: "
     "with a noisy preset, the closed-loop evaluator then judges the run's own model).",
 )
-@click.option(
-    "--protocol",
-    type=click.Choice(["converge", "paper"]),
-    default="converge",
-    show_default=True,
-    help="Training protocol of every run (see `symbench run`).",
-)
+@protocol_option("Training protocol of every run (see `symbench run`).")
 @click.option(
     "--parameters",
     type=click.IntRange(min=1),

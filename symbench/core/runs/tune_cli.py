@@ -9,6 +9,7 @@ from rich.table import Table
 
 from symbench.core.common.cli_types import POSITIVE, SEED, WORKERS, CommaList, WritableFolder
 from symbench.core.common.console import StdoutConsole
+from symbench.core.runs.options import protocol_option
 from symbench.core.runs.runner import RunSpec, check_names, default_preset, resolve_robot
 
 
@@ -24,13 +25,7 @@ from symbench.core.runs.runner import RunSpec, check_names, default_preset, reso
 @click.option(
     "--preset", default=None, help="Budgets (default: a standard dataset's own, else small)."
 )
-@click.option(
-    "--protocol",
-    type=click.Choice(["converge", "paper"]),
-    default="converge",
-    show_default=True,
-    help="Training protocol of every trial.",
-)
+@protocol_option("Training protocol of every trial.")
 @click.option(
     "--learning-rates",
     type=CommaList(POSITIVE),
