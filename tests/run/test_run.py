@@ -173,7 +173,7 @@ def test_a_record_carries_what_it_takes_to_rerun_it(smoke_home, tmp_path):
         "version": symbench.__version__,
         "source_sha256": sha256_of(sources.encode()),
     }
-    assert record.model.hyperparameters == {"latent": 128, "mlp_layers": 2, "steps": 2}
+    assert record.model.hyperparameters == {"latent": 128, "mlp_layers": 2, "steps": 2, "mirror": 0}
     assert record.training.config.model_dump() == {
         "seed": 0,
         "batch_size": 64,
@@ -207,4 +207,5 @@ def test_provenance_of_a_third_party_model_and_of_overridden_hyperparameters():
         "latent": 16,
         "mlp_layers": 2,
         "steps": 2,
+        "mirror": 0,
     }
