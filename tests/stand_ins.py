@@ -1,6 +1,8 @@
-"""Stand-ins shared by the evaluator tests: trained models that cost nothing."""
+"""Stand-ins shared by the evaluator tests: trained models and datasets that cost nothing."""
 
 from __future__ import annotations
+
+from types import SimpleNamespace
 
 import numpy as np
 
@@ -19,3 +21,20 @@ def trained_on_split(split: str, variant: str) -> TrainedOnSplit:
         np.zeros(2, dtype=np.int64),
     )
     return TrainedOnSplit(split, variant, lambda inputs: np.zeros((2, 6, 3)), test)
+
+
+def closed_loop_dataset(scenarios: list[dict], dataset_id: str | None = None) -> SimpleNamespace:
+    """What the closed-loop evaluator reads of a dataset: hexa's gains and no symmetry to
+    sort references by, one trajectory per scenario."""
+    return SimpleNamespace(
+        id=dataset_id,
+        spec=SimpleNamespace(
+            control=SimpleNamespace(kp=20.0, kd=3.0, timestep=0.001),
+            group=SimpleNamespace(rotation_order=1),
+            spec_hash=lambda: "spec",
+        ),
+        content_hash="content",
+        frames=None,
+        trajectory_ids=np.arange(len(scenarios)),
+        scenarios=scenarios,
+    )

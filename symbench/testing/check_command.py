@@ -9,13 +9,13 @@ from rich.table import Table
 
 from symbench.core.common.cli_types import SEED
 from symbench.core.common.console import StdoutConsole
-from symbench.core.data.frames import LegFrames
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import BACKENDS
-from symbench.core.robot.specs import load_robot
 from symbench.core.symmetry.groups import LegGroup
 from symbench.testing.equivariance import EquivarianceReport, check_model
+from symbench.testing.groups import robot_geometry_group
 from symbench.testing.model_group import measure_symmetry_group
+from symbench.testing.raw_states import robot_frames
 
 
 @click.command("check-equivariance")
@@ -91,8 +91,7 @@ def check_equivariance(
     group: LegGroup | str = robot_name
     frames = None
     if which_group == "geometry":
-        spec = load_robot(robot_name)
-        group, frames = spec.geometry_group, LegFrames.from_spec(spec)
+        group, frames = robot_geometry_group(robot_name), robot_frames(robot_name)
     reports = [
         check_model(e, group, n_samples=samples, seed=seed, hyper=hyper, frames=frames)
         for e in entries

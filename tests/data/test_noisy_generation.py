@@ -10,7 +10,7 @@ from types import SimpleNamespace
 
 import numpy as np
 import pytest
-from stand_ins import trained_on_split
+from stand_ins import closed_loop_dataset, trained_on_split
 
 import symbench
 from symbench.core.common.errors import SymbenchError
@@ -162,17 +162,8 @@ def test_the_closed_loop_trains_on_the_noisy_variant_and_says_so(
     monkeypatch.setattr(symbench, "track", track)
     monkeypatch.setattr(symbench, "build_view", lambda *args: SimpleNamespace(inputs=None))
     noise = {"torque_noise": 0.5} if "noisy" in did else {}
-    dataset = SimpleNamespace(
-        id=did,
-        spec=SimpleNamespace(
-            control=SimpleNamespace(kp=20.0, kd=3.0, timestep=0.001),
-            group=SimpleNamespace(rotation_order=1),
-            spec_hash=lambda: "spec",
-        ),
-        content_hash="content",
-        frames=None,
-        trajectory_ids=np.arange(2),
-        scenarios=[{"robot": "hexa", "yaw_deg": 10.0 * i, **noise} for i in range(2)],
+    dataset = closed_loop_dataset(
+        [{"robot": "hexa", "yaw_deg": 10.0 * i, **noise} for i in range(2)], did
     )
     context = EvaluationContext(
         entry=SimpleNamespace(name="m", backend="torch", view="leg_grouped", variant="acc"),

@@ -11,7 +11,7 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 from cli_invoke import error_line, invoke
-from stand_ins import trained_on_split
+from stand_ins import closed_loop_dataset, trained_on_split
 
 import symbench
 from symbench.core.common.errors import SymbenchError, UnknownNameError
@@ -229,17 +229,7 @@ def test_closed_loop_tracks_the_presets_references_over_its_horizon(
         seconds=0.05, references=references, pd_fractions=(0.0, 0.5), headline_pd=0.5
     )
     preset = dataclasses.replace(PRESETS["small"], closed_loop=budget)
-    dataset = SimpleNamespace(
-        spec=SimpleNamespace(
-            control=SimpleNamespace(kp=20.0, kd=3.0, timestep=0.001),
-            group=SimpleNamespace(rotation_order=1),
-            spec_hash=lambda: "spec",
-        ),
-        content_hash="content",
-        frames=None,
-        trajectory_ids=np.arange(4),
-        scenarios=[{"robot": "hexa", "yaw_deg": 10.0 * i} for i in range(4)],
-    )
+    dataset = closed_loop_dataset([{"robot": "hexa", "yaw_deg": 10.0 * i} for i in range(4)])
     context = _context(preset, dataset, retrain=trained_on_split, test_trajectories=[3, 2, 1, 0])
     context.output_dir = tmp_path
     metrics = closed_loop.evaluate(context)

@@ -4,6 +4,7 @@ checked on raw states over every element; the plain networks break on the mirror
 
 from __future__ import annotations
 
+import dataclasses
 import json
 
 import pytest
@@ -18,10 +19,10 @@ from symbench.testing.equivariance import check_model
 GEOMETRY = {"magneto": "K4", "hexa": "D6", "nona": "D9"}
 
 
-def geometry_check(model: str, robot: str, mirror: int, backend: str = "torch"):
+def geometry_check(model: str, robot: str, mirror: int, backend: str = "torch", variant="acc"):
     spec = load_robot(robot)
     return check_model(
-        registry.model(model, backend),
+        dataclasses.replace(registry.model(model, backend), variant=variant),
         spec.geometry_group,
         frames=LegFrames.from_spec(spec),
         hyper={"mirror": mirror, **({"steps": 1} if model == "sdgnn" else {})},
@@ -46,6 +47,13 @@ def test_the_plain_network_breaks_on_the_mirrors_only(robot):
     for element in report.elements:
         worst = max(element.errors.values())
         assert (worst > 0.1) if element.reflect else (worst < 1e-5), element
+
+
+@pytest.mark.parametrize("model", ["sdnn", "sdgnn"])
+def test_the_next_variant_the_closed_loop_uses_is_mirror_equivariant_too(model):
+    """Its inputs carry the desired next state: the signs come from its own layout."""
+    report = geometry_check(model, "hexa", mirror=1, variant="next")
+    assert report.equivariant and report.controls_failed
 
 
 def test_the_jax_twin_is_equivariant_to_the_mirrors_too():

@@ -43,21 +43,20 @@ PERIOD_TOLERANCE = 0.05  # relative
 
 def body_to_world(arrays: Mapping[str, np.ndarray]) -> dict[str, np.ndarray]:
     """Base-frame base vectors rotated into the world frame by each row's base orientation."""
-    out = dict(arrays)
-    r_wb = quat_to_matrix(np.asarray(arrays["base_quat"], np.float64))
-    for name in BASE_VECTORS:
-        if name in out:
-            out[name] = np.einsum("nij,nj->ni", r_wb, np.asarray(out[name], np.float64))
-    return out
+    return _rotate_base_vectors(arrays, "nij,nj->ni")
 
 
 def world_to_body(arrays: Mapping[str, np.ndarray]) -> dict[str, np.ndarray]:
     """The inverse of `body_to_world` (for tests and exports)."""
+    return _rotate_base_vectors(arrays, "nji,nj->ni")  # by R_wb transposed
+
+
+def _rotate_base_vectors(arrays: Mapping[str, np.ndarray], product: str) -> dict[str, np.ndarray]:
     out = dict(arrays)
     r_wb = quat_to_matrix(np.asarray(arrays["base_quat"], np.float64))
     for name in BASE_VECTORS:
         if name in out:
-            out[name] = np.einsum("nji,nj->ni", r_wb, np.asarray(out[name], np.float64))
+            out[name] = np.einsum(product, r_wb, np.asarray(out[name], np.float64))
     return out
 
 

@@ -18,13 +18,10 @@ import numpy as np
 from symbench.core.common.errors import SymbenchError
 from symbench.core.data.frames import LegFrames, quat_multiply, quat_to_matrix, yaw_quat
 from symbench.core.data.schema import FeatureType
+from symbench.core.sim.raw import FLAG_COLUMNS, JOINT_COLUMNS, WORLD_VECTORS
 from symbench.core.symmetry import legs as leg_symmetry
 from symbench.core.symmetry.groups import GroupElement
 from symbench.core.symmetry.legs import MIRROR_Y
-
-JOINT_COLUMNS = ("q", "qd", "qdd", "tau")
-FLAG_COLUMNS = ("contact", "magnet")
-WORLD_VECTORS = ("base_pos", "base_linvel", "base_linacc")
 
 
 def base_map(frames: LegFrames, g: GroupElement, tol: float = 1e-9) -> np.ndarray:

@@ -32,6 +32,7 @@ from symbench.core.common.atomic import write_text_atomic
 from symbench.core.common.errors import SymbenchError
 from symbench.core.common.jsonfile import parse_json
 from symbench.core.common.validation import explain
+from symbench.core.training.protocols import Protocol, StoppedBy
 
 RECORD_SCHEMA_VERSION: Final = 2
 LEGACY_SCHEMA_VERSION = 1  # unsealed, no provenance: shown by `symbench leaderboard` only
@@ -114,7 +115,7 @@ class TrainingConfig(_Strict):
 
     seed: int
     batch_size: int = Field(ge=1)
-    protocol: Literal["converge", "paper"] = "paper"
+    protocol: Protocol = "paper"
     max_steps: int | None = Field(default=None, ge=1)
     eval_every: int | None = Field(default=None, ge=1)
     patience: int | None = Field(default=None, ge=1)
@@ -132,7 +133,7 @@ class TrainingInfo(TrainingInfoV1):
     patience or budget (converge), overfitting-rule or epoch-cap (paper). Records from
     before these fields leave them out."""
 
-    stopped_by: Literal["patience", "budget", "overfitting-rule", "epoch-cap"] | None = None
+    stopped_by: StoppedBy | None = None
     stop_reason: str | None = None
     steps: int | None = Field(default=None, ge=0)
     best_step: int | None = Field(default=None, ge=0)

@@ -12,6 +12,7 @@ configuration is never replaced unless the run says so (`overwrite`).
 
 from __future__ import annotations
 
+import functools
 import json
 import re
 import time
@@ -209,14 +210,26 @@ def train_config(spec: RunSpec) -> TrainConfig:
 def matched_size(spec: RunSpec) -> dict[str, int]:
     """The width keywords that give the run's model `spec.parameters` parameters on the
     robot's data (its view's shapes follow from the leg count)."""
-    from symbench.core.data.model_dims import dims_for
     from symbench.core.robot.specs import load_robot
-    from symbench.core.training.sizes import matched_widths
 
     assert spec.parameters is not None
     entry = model_entry(spec)
-    dims = dims_for(entry.view, entry.variant, load_robot(spec.robot).n_legs)
-    return matched_widths(entry, dims, spec.parameters)
+    n_legs = load_robot(spec.robot).n_legs
+    return dict(_matched(entry.name, entry.backend, entry.variant, n_legs, spec.parameters))
+
+
+@functools.lru_cache(maxsize=64)
+def _matched(
+    model: str, backend: str, variant: str, n_legs: int, parameters: int
+) -> tuple[tuple[str, int], ...]:
+    """Found once per process: a run asks for its configuration several times (plan,
+    record check, training), and each search builds about a dozen networks."""
+    from symbench.core.data.model_dims import dims_for
+    from symbench.core.training.sizes import matched_widths
+
+    entry = replace(registry.model(model, backend), variant=variant)
+    dims = dims_for(entry.view, entry.variant, n_legs)
+    return tuple(matched_widths(entry, dims, parameters).items())
 
 
 def budget_text(config: TrainConfig) -> str:
@@ -340,7 +353,7 @@ def _check_replaceable(spec: RunSpec, content_hash: str | None = None) -> None:
 
 def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> ResultRecord:
     """Train and evaluate one model; writes and returns the validated record."""
-    from symbench.core.training.loop import train
+    from symbench.core.training.loop import batches_per_epoch, train
     from symbench.core.training.resume import BEST_DIR
 
     check_names(spec)
@@ -425,9 +438,10 @@ def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> 
     )
     # evaluators retrain inside their own time: report each second once
     timer.timings["evaluation_s"] -= timer.timings.get("retraining_s", 0.0)
-    per_epoch = len(train_set) // min(config.batch_size, len(train_set))  # batches per pass
-    paper = config.protocol == "paper"
-    epochs = len(model.history["train_loss"]) if paper else model.steps // per_epoch
+    if config.protocol == "paper":
+        epochs = len(model.history["train_loss"])
+    else:  # full passes over the training data
+        epochs = model.steps // batches_per_epoch(len(train_set), config.batch_size)
     record = RecordBody(
         created=datetime.now(UTC).isoformat(timespec="seconds"),
         model=ModelInfo.model_validate(

@@ -11,6 +11,7 @@ from symbench.core.common.cli_types import POSITIVE, SEED, WORKERS, CommaList, W
 from symbench.core.common.console import StdoutConsole
 from symbench.core.runs.options import protocol_option
 from symbench.core.runs.runner import RunSpec, check_names, default_preset, resolve_robot
+from symbench.core.runs.tune import DEFAULT_WIDTH_SCALES
 
 
 @click.command("tune")
@@ -35,7 +36,7 @@ from symbench.core.runs.runner import RunSpec, check_names, default_preset, reso
 @click.option(
     "--width-scales",
     type=CommaList(POSITIVE),
-    default="0.5,1,2",
+    default=",".join(f"{s:g}" for s in DEFAULT_WIDTH_SCALES),
     show_default=True,
     help="Comma-separated factors on the model's width keywords (its ModelEntry.widths).",
 )

@@ -46,6 +46,11 @@ RAW_COLUMNS: tuple[RawColumn, ...] = (
     RawColumn("magnet", ("legs",), "0/1", "foot magnet engaged"),
 )
 COLUMN_NAMES = tuple(c.name for c in RAW_COLUMNS)
+# how a symmetry acts on the columns: per-leg joint scalars (a mirror flips some), per-leg
+# flags, and world-frame vectors of the base (its angular velocity is a pseudo-vector)
+JOINT_COLUMNS = ("q", "qd", "qdd", "tau")
+FLAG_COLUMNS = ("contact", "magnet")
+WORLD_VECTORS = ("base_pos", "base_linvel", "base_linacc")
 
 
 def column_shape(col: RawColumn, n_legs: int) -> tuple[int, ...]:

@@ -22,14 +22,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from symbench.core.sim.raw import FLAG_COLUMNS, JOINT_COLUMNS, WORLD_VECTORS
 from symbench.core.sim.rollout import Rollout, run_climb
 from symbench.core.sim.setup import Climb
 from symbench.core.symmetry.groups import GroupElement
 from symbench.core.symmetry.legs import JOINT_MIRROR_SIGNS, MIRROR_Y, base_map
 
-JOINT_COLUMNS = ("q", "qd", "qdd", "tau")
-FLAG_COLUMNS = ("contact", "magnet")
-VECTOR_COLUMNS = ("base_pos", "base_linvel", "base_linacc")
 # The largest error a generator may show, relative: per column, the largest difference
 # between twin and run divided by the column's largest magnitude in the run (accelerations in
 # stiff magnetic contacts reach 1e3 rad/s^2, positions a few tenths of a metre). Twins of the
@@ -60,7 +58,7 @@ def expected_twin(run: Rollout, climb: Climb, g: GroupElement) -> dict[str, np.n
     legs = np.asarray(g.perm)
     out = {c: arrays[c][:, legs] * signs for c in JOINT_COLUMNS}
     out |= {c: arrays[c][:, legs] for c in FLAG_COLUMNS}
-    out |= {c: arrays[c] @ world.T for c in VECTOR_COLUMNS}
+    out |= {c: arrays[c] @ world.T for c in WORLD_VECTORS}
     out["base_angvel"] = np.linalg.det(world) * (arrays["base_angvel"] @ world.T)
     out["base_rotation"] = world @ base_rotations(arrays["base_quat"]) @ gb
     return out

@@ -46,11 +46,8 @@ from symbench.core.plugin.entries import ModelEntry
 from symbench.core.training import resume
 from symbench.core.training.backends import get_backend
 from symbench.core.training.normalization import Normalizer
+from symbench.core.training.protocols import PROTOCOLS
 from symbench.core.training.trained_model import TrainedModel
-
-PROTOCOLS = ("converge", "paper")
-# why a training stopped, by protocol: the table's `stopped_by` column
-STOPPED_BY = ("patience", "budget", "overfitting-rule", "epoch-cap")
 
 
 @dataclass(frozen=True)
@@ -110,19 +107,23 @@ class _Progress:
     stopped: str = ""
     steps: int = 0  # gradient steps taken
     best_step: int = 0  # gradient steps taken when the best parameters were
-    stopped_by: str = ""  # one of STOPPED_BY once stopped
+    stopped_by: str = ""  # a protocols.StoppedBy once stopped
 
     @property
     def best_val(self) -> float:
         return self.val_loss[self.best_epoch] if self.best_epoch >= 0 else math.inf
 
 
+def batches_per_epoch(n: int, batch_size: int) -> int:
+    """Full batches in one pass over `n` samples (the remainder is dropped)."""
+    return n // min(batch_size, n)
+
+
 def batch_order(n: int, batch_size: int, seed: int, epoch: int) -> np.ndarray:
     """(n_batches, batch) indices of one epoch: a fresh permutation, the remainder dropped."""
-    batch = min(batch_size, n)
+    n_batches = batches_per_epoch(n, batch_size)
     perm = np.random.default_rng([seed, epoch]).permutation(n)
-    n_batches = n // batch
-    return perm[: n_batches * batch].reshape(n_batches, batch)
+    return perm[: n_batches * min(batch_size, n)].reshape(n_batches, -1)
 
 
 def round_batches(n: int, config: TrainConfig, state: _Progress) -> np.ndarray:
@@ -131,7 +132,7 @@ def round_batches(n: int, config: TrainConfig, state: _Progress) -> np.ndarray:
     stream of epochs, so a check may fall in the middle of one."""
     if config.protocol == "paper":
         return batch_order(n, config.batch_size, config.seed, state.epoch)
-    per_epoch = n // min(config.batch_size, n)
+    per_epoch = batches_per_epoch(n, config.batch_size)
     steps = range(state.steps, min(state.steps + config.eval_every, config.max_steps))
     epochs = {s // per_epoch for s in steps}
     orders = {e: batch_order(n, config.batch_size, config.seed, e) for e in epochs}
@@ -234,7 +235,7 @@ def _strikes(
 
 
 def _stop_reason(state: _Progress, config: TrainConfig) -> tuple[str, str]:
-    """(one of STOPPED_BY, a sentence) once the protocol says stop, else ("", "")."""
+    """(a protocols.StoppedBy, a sentence) once the protocol says stop, else ("", "")."""
     if config.protocol == "converge":
         if state.strikes >= config.patience:
             return "patience", (
@@ -258,7 +259,7 @@ def _bar_total(config: TrainConfig, n_train: int) -> int:
     """The progress bar counts gradient steps, up to the budget or the epoch cap."""
     if config.protocol == "converge":
         return config.max_steps
-    return config.max_epochs * (n_train // min(config.batch_size, n_train))
+    return config.max_epochs * batches_per_epoch(n_train, config.batch_size)
 
 
 def _check_data(entry: ModelEntry, train: ViewArrays, val: ViewArrays) -> ModelDims:

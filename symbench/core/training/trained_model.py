@@ -40,7 +40,7 @@ class TrainedModel:
     best_epoch: int  # the validation check of the best parameters (an epoch under `paper`)
     config: dict[str, Any]  # the TrainConfig as a dict
     stopped: str = ""  # why training ended, a sentence
-    stopped_by: str = ""  # why training ended: one of loop.STOPPED_BY
+    stopped_by: str = ""  # why training ended: a protocols.StoppedBy
     steps: int = 0  # gradient steps taken
     best_step: int = 0  # gradient steps taken when the best parameters were
     _predictor: Predictor | None = field(default=None, repr=False, compare=False)
