@@ -22,7 +22,7 @@ def test_round_trip(valid_record, tmp_path):
     written = write_record(valid_record(), path)
     assert read_record(path) == written
     assert written.seal == seal_of(json.loads(path.read_text()))
-    assert written.key() == "hexa-climb-smoke-v4__smoke__iid__sdnn__acc__torch__seed0"
+    assert written.key() == "hexa-climb-smoke-v5__smoke__iid__sdnn__acc__torch__converge__seed0"
     assert not list(tmp_path.glob(".*tmp"))  # the atomic write left no temp file
 
 
@@ -100,7 +100,7 @@ def test_schema_1_records_are_shown_but_not_trusted(valid_record, as_schema_1, t
     path.write_text(json.dumps(as_schema_1(valid_record())))
     assert (
         read_display_record(path).key()
-        == "hexa-climb-smoke-v4__smoke__iid__sdnn__acc__torch__seed0"
+        == "hexa-climb-smoke-v5__smoke__iid__sdnn__acc__torch__converge__seed0"
     )
     with pytest.raises(SymbenchError) as error:
         read_record(path)

@@ -13,15 +13,18 @@ from symbench.core.common.errors import SymbenchError
 from symbench.core.data import load_dataset
 from symbench.core.data.generation import generate
 from symbench.core.data.presets import preset
+from symbench.core.data.splits import SplitContext
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import SplitEntry
 from symbench.core.plugin.host import PluginHost, set_host
 from symbench.core.robot.specs import load_robot
+from symbench.plugins.splits.assign import unseen_rotation
 
 STANDARD = (
     "iid",
     "unseen-heading",
     "unseen-rotation",
+    "orbit-rotation",
     "fraction-0.1",
     "fraction-0.25",
     "fraction-0.5",
@@ -78,7 +81,7 @@ def test_parts_are_disjoint_deterministic_and_select_whole_trajectories(hexa_sma
 def test_seeds_change_iid_but_nothing_else_changes_it(hexa_small):
     a, b = hexa_small.split_indices("iid", 0), hexa_small.split_indices("iid", 1)
     assert a.test.tolist() != b.test.tolist()
-    assert len(a.test) == len(b.test) == round(0.2 * 48)
+    assert len(a.test) == len(b.test) == round(0.2 * 96)
 
 
 def test_unseen_heading_holds_out_whole_headings(hexa_small):
@@ -89,12 +92,52 @@ def test_unseen_heading_holds_out_whole_headings(hexa_small):
     assert _scenario(hexa_small, parts.test, "heading_deg") == {180.0}
 
 
-def test_unseen_rotation_trains_in_one_fundamental_sector(hexa_small):
+def test_orbit_rotation_tests_the_images_of_one_fundamental_sector(hexa_small):
+    parts = hexa_small.split_indices("orbit-rotation", 0)
+    # hexa: sector [0, 60) holds yaws 0, 15, 30 and 45; the rest are their symmetric images
+    sector = {0.0, 15.0, 30.0, 45.0}
+    assert _scenario(hexa_small, parts.train, "yaw_deg") == sector
+    assert _scenario(hexa_small, parts.val, "yaw_deg") <= sector
+    assert _scenario(hexa_small, parts.test, "yaw_deg") == {15.0 * k for k in range(4, 24)}
+
+
+def test_unseen_rotation_tests_yaws_between_the_training_yaws(hexa_small):
     parts = hexa_small.split_indices("unseen-rotation", 0)
-    # hexa: sector [0, 60) holds yaws 0 and 30; the rest are their symmetric images
+    # every other yaw of [0, 60) trains; in the other sectors, the yaws halfway between test
     assert _scenario(hexa_small, parts.train, "yaw_deg") == {0.0, 30.0}
     assert _scenario(hexa_small, parts.val, "yaw_deg") <= {0.0, 30.0}
-    assert _scenario(hexa_small, parts.test, "yaw_deg") == {30.0 * k for k in range(2, 12)}
+    test = {60.0 * k + offset for k in range(1, 6) for offset in (15.0, 45.0)}
+    assert _scenario(hexa_small, parts.test, "yaw_deg") == test
+
+
+@pytest.mark.parametrize("robot", ["magneto", "hexa", "nona"])
+def test_no_unseen_rotation_test_climb_is_an_image_of_a_training_climb(robot):
+    """On every robot's small grid: the test yaws, taken into the first sector, lie strictly
+    between training yaws, outside the first sector, and both sets are closed under the
+    mirrors (offset -> -offset), so no test climb is a rotated or mirrored training climb."""
+    spec = load_robot(robot)
+    order = spec.group.rotation_order
+    width = 360.0 / order
+    yaws = np.array([s.yaw_deg for s in short_grid(robot)])
+    context = SplitContext(
+        dataset_id=robot,
+        trajectory_ids=np.arange(len(yaws)),
+        scenarios=tuple({"yaw_deg": y} for y in yaws),
+        n_samples=np.ones(len(yaws), dtype=int),
+        rotation_order=order,
+        seed=0,
+    )
+    labels = unseen_rotation(context)
+    offsets = np.round(np.mod(yaws, width), 6) % round(width, 6)
+    trained = set(offsets[np.isin(labels, ["train", "val"])].tolist())
+    tested = set(offsets[labels == "test"].tolist())
+    assert len(trained) >= 2 and tested and not trained & tested
+    assert (yaws[np.isin(labels, ["train", "val"])] < width).all()
+    assert (yaws[labels == "test"] >= width).all()
+    for offsets_ in (trained, tested):
+        assert {round((width - o) % width, 6) for o in offsets_} == offsets_
+    between = sorted(trained) + [width]
+    assert all(any(a < o < b for a, b in zip(between, between[1:])) for o in tested)
 
 
 def test_fractions_are_nested_and_share_the_iid_test_set(hexa_small):
@@ -111,7 +154,7 @@ def test_fractions_are_nested_and_share_the_iid_test_set(hexa_small):
 
 
 def test_smoke_supports_every_standard_split(smoke_hexa):
-    """The smoke preset's 4 trajectories (headings 0 and 180 x yaws 0 and 180) give every
+    """The smoke preset's 4 trajectories (headings 0 and 180 x yaws 0 and 250) give every
     standard split non-empty, disjoint parts that hold out what the split promises."""
     ds = load_dataset(smoke_hexa.dataset_id)
     assert ds.trajectory_ids.tolist() == [0, 1, 2, 3]
@@ -123,10 +166,15 @@ def test_smoke_supports_every_standard_split(smoke_hexa):
         assert train | val | test <= {0, 1, 2, 3}, name
     iid = parts["iid"]
     assert (len(iid.train), len(iid.val), len(iid.test)) == (2, 1, 1)
-    for split, field in (("unseen-heading", "heading_deg"), ("unseen-rotation", "yaw_deg")):
+    held_out = {
+        ("unseen-heading", "heading_deg"): 180.0,
+        ("unseen-rotation", "yaw_deg"): 250.0,
+        ("orbit-rotation", "yaw_deg"): 250.0,
+    }
+    for (split, field), value in held_out.items():
         seen = np.concatenate([parts[split].train, parts[split].val])
         assert _scenario(ds, seen, field) == {0.0}, split
-        assert _scenario(ds, parts[split].test, field) == {180.0}, split
+        assert _scenario(ds, parts[split].test, field) == {value}, split
     for share in (0.1, 0.25, 0.5, 0.75):
         part = parts[f"fraction-{share:g}"]
         assert (part.val.tolist(), part.test.tolist()) == (iid.val.tolist(), iid.test.tolist())
@@ -157,7 +205,7 @@ def test_a_split_plugin_is_used_and_its_mistakes_are_named(hexa_small):
     set_host(host)
     try:
         parts = hexa_small.split_indices("first-half", 0)
-        assert parts.train.tolist() == list(range(20)) and len(parts.test) == 18
+        assert parts.train.tolist() == list(range(20)) and len(parts.test) == 66
         with pytest.raises(SymbenchError, match="unknown label"):
             hexa_small.split_indices("bad-label", 0)
         with pytest.raises(SymbenchError, match="test empty"):

@@ -57,7 +57,7 @@ def test_import_split_train_and_evaluate_from_the_command_line(home, tmp_path):
     invoke([*run, "--dataset", "wall"])
     invoke([*run, "--dataset", "wall-2"])
     records = [
-        f"{did}__smoke__heading_0_90_vs_180_270__ffnn__acc__torch__seed0.json"
+        f"{did}__smoke__heading_0_90_vs_180_270__ffnn__acc__torch__converge__seed0.json"
         for did in ("wall", "wall-2")
     ]
     assert sorted(p.name for p in results.glob("*.json")) == sorted(records)

@@ -30,13 +30,13 @@ from symbench.core.runs.results import read_record, write_record
 from symbench.core.runs.runner import RunSpec, run
 from symbench.core.runs.sweep import plan, sweep
 
-SMOKE = "hexa-climb-smoke-v4"
-SMALL = "hexa-climb-small-v4"
+SMOKE = "hexa-climb-smoke-v5"
+SMALL = "hexa-climb-small-v5"
 LOGS = "hexa-logs"  # imported: the smoke trajectories exported and imported again
 
 
 def key(dataset: str, preset: str, model: str = "sdnn", seed: int = 0, variant="acc") -> str:
-    return f"{dataset}__{preset}__iid__{model}__{variant}__torch__seed{seed}"
+    return f"{dataset}__{preset}__iid__{model}__{variant}__torch__converge__seed{seed}"
 
 
 @pytest.fixture(scope="module")

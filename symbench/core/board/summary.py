@@ -3,7 +3,7 @@
 The per-robot pages rank models within one dataset and split; the claims a reader checks
 (does a model generalize to unseen rotations, does it degrade as legs increase, does it keep
 the robot on the wall) need the models in columns across splits and datasets (a standard
-dataset id names its robot, e.g. hexa-climb-small-v4), so this page puts them there.
+dataset id names its robot, e.g. hexa-climb-small-v5), so this page puts them there.
 """
 
 from __future__ import annotations
@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-SPLIT_ORDER = ("iid", "unseen-heading", "unseen-rotation")
+SPLIT_ORDER = ("iid", "unseen-heading", "unseen-rotation", "orbit-rotation")
 
 
 def _split_key(split: str) -> tuple[int, float, str]:

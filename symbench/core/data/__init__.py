@@ -1,7 +1,7 @@
 """Datasets: generation, storage, views, splits and import (see dataset.py for the API).
 
 from symbench.core.data import load_dataset
-ds = load_dataset("hexa-climb-small-v4")
+ds = load_dataset("hexa-climb-small-v5")
 train, val, test = ds.split_views("leg_grouped", "acc", "iid", seed=0)
 """
 

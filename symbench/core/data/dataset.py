@@ -1,6 +1,6 @@
 """Loading a cached dataset: verified files, raw trajectories, views and splits.
 
-ds = load_dataset("hexa-climb-small-v4")
+ds = load_dataset("hexa-climb-small-v5")
 split = ds.split_indices("unseen-rotation", seed=0)      # trajectory ids
 train, val, test = ds.split_views("leg_grouped", "acc", "unseen-rotation", seed=0)
 """

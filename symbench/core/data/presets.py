@@ -6,8 +6,10 @@ sample-efficiency curve; `symbench presets` shows them all. Every consumer reads
 from here (`preset(name)`), never from a copy.
 
 A grid is the product of inclinations, slope headings, initial base yaws (evenly covering
-the full circle, a whole number per fundamental sector of the robot's rotation group, so
-that `unseen-rotation` has training data), step directions, leg orders and seeds; its order
+the full circle, an even whole number per fundamental sector of the robot's rotation group,
+so that `unseen-rotation` can train on every other yaw of one sector and test on the yaws
+between them in the other sectors, and `orbit-rotation` on their exact images), step
+directions, leg orders and seeds; its order
 is fixed, so trajectory k of a preset is always the same scenario. The grid, with the
 preset's name and description, is stored in the dataset metadata (and so in its content
 hash): bump DATASET_VERSION whenever a grid or the recorded content changes. The budgets
@@ -30,8 +32,10 @@ from symbench.core.common.errors import UnknownNameError
 from symbench.core.sim.scenario import Scenario
 
 # 2: yaws beyond a symmetry step carry the gait along; 3: small grid; 4: simulated with pinned
-# numerics (symbench.core.data.determinism), identical on every x86-64 CPU
-DATASET_VERSION = 4
+# numerics (symbench.core.data.determinism), identical on every x86-64 CPU; 5: an even number of
+# yaws per sector (small: at least 24 per turn), smoke's second yaw 250 degrees, so that
+# `unseen-rotation` tests yaws between the training yaws (`orbit-rotation` is the old split)
+DATASET_VERSION = 5
 RECORD_PERIOD = 0.006  # s between recorded samples (the paper kept every 6th 1 kHz step)
 LEG_ORDERS = ("default", "reversed")
 
@@ -42,7 +46,7 @@ class ScenarioGrid:
 
     inclinations_deg: tuple[float, ...]
     headings_deg: tuple[float, ...]
-    yaws_per_turn: int  # at least this many, a whole number per sector; 0: just 0 and 180
+    yaws_per_turn: int  # at least this many, an even number per sector; 0: just 0 and 250
     directions: tuple[str, ...]
     leg_orders: tuple[str, ...]
     seeds: tuple[int, ...]
@@ -50,10 +54,15 @@ class ScenarioGrid:
     torque_noise: float = 0.0  # N m, std of the noise on the expert's executed command
 
     def yaws_deg(self, rotation_order: int) -> tuple[float, ...]:
-        """Evenly spaced from 0; (0, 180) lies on both sides of every robot's sector."""
+        """Evenly spaced from 0, an even number per sector: every other one of a sector's yaws
+        trains `unseen-rotation`, the ones between are its test yaws in the other sectors (even,
+        so that both sets are closed under the robot's mirrors). 0 and 250 (smoke): 250 lies
+        outside the first sector and off every image of 0 for every rotation order from 2 to
+        12."""
         if self.yaws_per_turn == 0:
-            return (0.0, 180.0)
-        n = rotation_order * math.ceil(self.yaws_per_turn / rotation_order)
+            return (0.0, 250.0)
+        per_sector = 2 * math.ceil(self.yaws_per_turn / (2 * rotation_order))
+        n = rotation_order * per_sector
         return tuple(round(360.0 * k / n, 9) for k in range(n))
 
     def scenarios(self, robot: str, n_legs: int, rotation_order: int) -> list[Scenario]:
@@ -169,11 +178,12 @@ _SMOKE_GRID = ScenarioGrid(
     seconds=1.0,
 )
 # Two headings suffice for the invariance split (on a wall they are exact images);
-# 12 yaws give every robot at least two distinct yaws per symmetry sector.
+# 24 yaws a turn (36 for nona) give every robot at least 4 yaws per symmetry sector: 2 that
+# train `unseen-rotation`, 2 between them that it tests in the other sectors.
 _SMALL_GRID = ScenarioGrid(
     inclinations_deg=(90.0,),
     headings_deg=(0.0, 180.0),
-    yaws_per_turn=12,
+    yaws_per_turn=24,
     directions=("forward", "left"),
     leg_orders=("default",),
     seeds=(0,),
@@ -247,14 +257,14 @@ def preset(name: str) -> Preset:
 
 
 def dataset_id(robot: str, preset_name: str) -> str:
-    """e.g. hexa-climb-small-v4."""
+    """e.g. hexa-climb-small-v5."""
     preset(preset_name)
     return f"{robot}-climb-{preset_name}-v{DATASET_VERSION}"
 
 
 def parse_dataset_id(dataset_id_: str) -> tuple[str, str] | None:
     """(robot, preset) of a generated dataset id, or None for other ids (imports); a
-    preset's name may hold dashes (hexa-climb-small-noisy-v4)."""
+    preset's name may hold dashes (hexa-climb-small-noisy-v5)."""
     parts = dataset_id_.split("-")
     name = "-".join(parts[2:-1])
     if len(parts) >= 4 and parts[1] == "climb" and name in PRESETS and parts[-1].startswith("v"):

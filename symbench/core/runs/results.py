@@ -44,13 +44,21 @@ Sha256 = Annotated[str, StringConstraints(pattern=r"^[0-9a-f]{64}$")]
 
 
 def run_key(
-    dataset: str, preset: str, split: str, model: str, variant: str, backend: str, seed: int
+    dataset: str,
+    preset: str,
+    split: str,
+    model: str,
+    variant: str,
+    backend: str,
+    protocol: str,
+    seed: int,
 ) -> str:
     """What identifies a run by name: one record per key, written as `<key>.json`, e.g.
-    `hexa-climb-small-v4__small__iid__sdnn__acc__torch__seed0`. The dataset id names the data
-    (a standard id names its robot and grid), the preset the budgets; both are in the key, so
-    runs on other data or other budgets never share a record file or a checkpoint folder."""
-    return f"{dataset}__{preset}__{split}__{model}__{variant}__{backend}__seed{seed}"
+    `hexa-climb-small-v5__small__iid__sdnn__acc__torch__converge__seed0`. The dataset id names
+    the data (a standard id names its robot and grid), the preset the budgets, the protocol
+    how training stops; all are in the key, so runs on other data, budgets or protocols never
+    share a record file or a checkpoint folder."""
+    return f"{dataset}__{preset}__{split}__{model}__{variant}__{backend}__{protocol}__seed{seed}"
 
 
 class _Strict(BaseModel):
@@ -164,7 +172,13 @@ class RecordV1(_Strict):
     def key(self) -> str:
         """The run's key (`run_key`), safe as a file name: one record per key."""
         m, d = self.model, self.dataset
-        return run_key(d.id, d.preset, self.split, m.name, m.variant, m.backend, self.seed)
+        return run_key(
+            d.id, d.preset, self.split, m.name, m.variant, m.backend, self.protocol(), self.seed
+        )
+
+    def protocol(self) -> Protocol:
+        """Schema 1 predates the `converge` protocol: its runs were trained under the paper's."""
+        return "paper"
 
 
 class RecordBody(RecordV1):
@@ -173,6 +187,9 @@ class RecordBody(RecordV1):
     schema_version: Literal[2] = RECORD_SCHEMA_VERSION  # type: ignore[assignment]  # narrows v1
     model: ModelInfo
     training: TrainingInfo
+
+    def protocol(self) -> Protocol:
+        return self.training.config.protocol
 
     def configuration(self) -> dict[str, Any]:
         """Everything the run was asked to do, as JSON values by a readable name: two records

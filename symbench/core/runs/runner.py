@@ -92,7 +92,14 @@ class RunSpec:
         """Matches `ResultRecord.key()`: the variant is resolved from the registry."""
         variant = model_entry(self).variant
         return run_key(
-            self.dataset_id, self.preset, self.split, self.model, variant, self.backend, self.seed
+            self.dataset_id,
+            self.preset,
+            self.split,
+            self.model,
+            variant,
+            self.backend,
+            self.protocol,
+            self.seed,
         )
 
     @property

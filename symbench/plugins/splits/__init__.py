@@ -1,4 +1,5 @@
-"""Built-in splits: iid, unseen-heading, unseen-rotation and fraction-F (sample efficiency).
+"""Built-in splits: iid, unseen-heading, unseen-rotation, orbit-rotation and fraction-F
+(sample efficiency).
 
 Registered through the `symbench_splits` hook exactly as a third-party split would be.
 The fraction-F splits are those of the presets' sample-efficiency curves.
@@ -27,7 +28,13 @@ def symbench_splits() -> list[SplitEntry]:
         SplitEntry(
             "unseen-rotation",
             splits.unseen_rotation,
-            "train on initial yaws in one fundamental sector, test on the rest (equivariance)",
+            "train on every other yaw of one sector, test on yaws between them in the other "
+            "sectors (generalization across rotations)",
+        ),
+        SplitEntry(
+            "orbit-rotation",
+            splits.orbit_rotation,
+            "train on the yaws of one sector, test on their rotated images (pure equivariance)",
         ),
     ]
     entries += [

@@ -43,17 +43,49 @@ def unseen_heading(context: SplitContext) -> np.ndarray:
     return carve_validation(labels, context)
 
 
-def unseen_rotation(context: SplitContext) -> np.ndarray:
-    """Train on initial yaws in the fundamental sector [0, 360 / order), test on the others."""
+def _sector_offsets(context: SplitContext) -> tuple[float, np.ndarray, np.ndarray]:
+    """(sector width, each yaw's offset within its sector, whether it is in the first)."""
     width = 360.0 / context.rotation_order
     yaws = np.mod(context.values("yaw_deg").astype(float), 360.0)
-    inside = yaws < width - 1e-9
+    offsets = np.round(np.mod(yaws, width), 6) % round(width, 6)
+    return width, offsets, yaws < width - 1e-6
+
+
+def orbit_rotation(context: SplitContext) -> np.ndarray:
+    """Train on initial yaws in the fundamental sector [0, 360 / order), test on the others.
+
+    A pure equivariance check: on an even yaw grid every test climb is an exact symmetric
+    image of a training climb, so an equivariant model meets no new motion here."""
+    width, _, inside = _sector_offsets(context)
     if inside.all() or not inside.any():
         raise SymbenchError(
-            f"dataset {context.dataset_id}: unseen-rotation needs initial yaws "
+            f"dataset {context.dataset_id}: orbit-rotation needs initial yaws "
             f"both inside and outside [0, {width:g}) degrees"
         )
     return carve_validation(np.where(inside, "train", "test").astype(object), context)
+
+
+def unseen_rotation(context: SplitContext) -> np.ndarray:
+    """Train on every other yaw of the fundamental sector; test, in the other sectors, on
+    the yaws whose offset within their sector falls between the training yaws.
+
+    No test climb is a symmetric image of a training climb, so an equivariant model must
+    interpolate between yaws too, and a model without the symmetry must also carry what it
+    learned into sectors it never saw. The rest (the first sector's other yaws, the other
+    sectors' images of the training yaws) is unused."""
+    width, offsets, inside = _sector_offsets(context)
+    first = np.unique(offsets[inside])
+    trained = first[::2]
+    test = ~inside & ~np.isin(offsets, trained)
+    if len(first) == 0 or not test.any():
+        raise SymbenchError(
+            f"dataset {context.dataset_id}: unseen-rotation needs initial yaws in "
+            f"[0, {width:g}) degrees and, outside it, yaws between their rotated images"
+        )
+    labels = np.full(len(offsets), "unused", dtype=object)
+    labels[inside & np.isin(offsets, trained)] = "train"
+    labels[test] = "test"
+    return carve_validation(labels, context)
 
 
 def fraction(share: float) -> Callable[[SplitContext], np.ndarray]:
