@@ -20,7 +20,7 @@ class Architecture:
     module: str  # file in the backend package holding `build`
     view: str
     equivariant: bool
-    learning_rate: float
+    learning_rate: float  # chosen by `symbench tune` (leaderboards/tuning/README.md)
     description: str
     widths: tuple[str, ...]  # the build keywords `symbench tune` scales together
 
@@ -31,7 +31,7 @@ ARCHITECTURES = (
         "ffnn",
         "vector",
         False,
-        1e-3,
+        3e-3,
         f"MLP ({FFNN.layers} x {FFNN.width}) on the stacked world-frame vector",
         ("width",),
     ),
@@ -67,7 +67,7 @@ ARCHITECTURES = (
         "sdnn",
         "leg_grouped",
         True,
-        5e-4,
+        1.5e-3,
         f"shared per-leg MLPs, sum over legs, {SDNN.steps} processing steps",
         ("latent",),
     ),

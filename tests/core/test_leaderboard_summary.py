@@ -33,18 +33,19 @@ def test_models_are_columns_and_splits_are_ordered(tmp_path, make_record):
     assert "Closed loop" not in page  # no closed-loop records, no section
 
 
-def test_closed_loop_section_shows_alone_and_with_pd(tmp_path, make_record):
+def test_closed_loop_section_shows_the_headline_score_and_time_held(tmp_path, make_record):
     for s in range(3):
         record = make_record(seed=s)
         record["metrics"]["closed-loop"] = {
-            "time_to_failure_s": 1.0 + s,
-            "success_rate": 0.0,
-            "pd_time_to_failure_s": 10.0,
-            "pd_success_rate": 1.0,
+            "time_to_failure_s": 0.5,  # the model alone: not the headline
+            "pd_time_to_failure_s": 1.0 + s,
+            "pd_success_rate": 0.0,
+            "pd_joint_rmse_rad": 0.02,
+            "pd_normalized_score": 0.4 + 0.1 * s,
         }
         write_record(record, tmp_path / f"r{s}.json")
     page = headline(aggregate(load_records(tmp_path)))
-    assert "| hexa-climb-smoke-v5 | iid | 2 / 10 |" in page
+    assert "| hexa-climb-smoke-v5 | iid | 0.5 ± 0.1 / 2 |" in page
 
 
 def test_sample_efficiency_curve_ends_with_iid_at_one(tmp_path, make_record, monkeypatch):

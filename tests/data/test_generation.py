@@ -25,7 +25,7 @@ def _files(root):
 
 def test_generating_twice_gives_identical_files_and_hash(smoke_hexa, home, tmp_path, monkeypatch):
     first = _files(smoke_hexa.root)
-    assert smoke_hexa.n_trajectories == 4 and smoke_hexa.n_failed == 0
+    assert smoke_hexa.n_trajectories == 6 and smoke_hexa.n_failed == 0
     monkeypatch.setenv("SYMBENCH_HOME", str(tmp_path / "other"))
     again = generate("hexa", "smoke", workers=2, simulator=fake_simulate, show_progress=False)
     assert again.root != smoke_hexa.root
@@ -80,7 +80,7 @@ def test_an_interrupted_generation_resumes_and_keeps_finished_work(home, tmp_pat
         simulator=lambda s, record_period: resumed.append(s) or fake_simulate(s, record_period),
         show_progress=False,
     )
-    assert report.n_simulated == 2 and len(resumed) == 2 and not set(resumed) & set(calls)
+    assert report.n_simulated == 4 and len(resumed) == 4 and not set(resumed) & set(calls)
     assert all((root / "trajectories" / n).stat().st_mtime_ns == t for n, t in kept.items())
 
     monkeypatch.setenv("SYMBENCH_HOME", str(tmp_path / "fresh"))
@@ -141,8 +141,8 @@ def test_metadata_names_its_provenance(smoke_hexa):
     assert meta["raw_schema_version"] == SCHEMA_VERSION
     assert meta["robot_spec_hash"] == load_robot("hexa").spec_hash()
     assert set(meta["versions"]) >= {"symbench", "mujoco", "dm-control"}
-    assert meta["scenario_grid"]["yaws_deg"] == [0.0, 180.0]
-    assert len({r["sha256"] for r in meta["trajectories"]}) == 4
+    assert meta["scenario_grid"]["yaws_deg"] == [0.0, 180.0, 250.0]
+    assert len({r["sha256"] for r in meta["trajectories"]}) == 6
 
 
 def test_ensure_dataset_generates_only_when_missing(home, monkeypatch):
@@ -155,9 +155,9 @@ def test_ensure_dataset_generates_only_when_missing(home, monkeypatch):
         lambda: lambda s, record_period: calls.append(s) or fake_simulate(s, record_period),
     )
     ds = generation.ensure_dataset("hexa", "smoke", workers=1, show_progress=False)
-    assert len(calls) == 4 and ds.id == "hexa-climb-smoke-v5"
+    assert len(calls) == 6 and ds.id == "hexa-climb-smoke-v5"
     assert generation.ensure_dataset("hexa", "smoke", workers=1).content_hash == ds.content_hash
-    assert len(calls) == 4
+    assert len(calls) == 6
 
 
 def test_a_changed_robot_spec_is_noticed_and_ensure_dataset_rebuilds(smoke_hexa, monkeypatch):

@@ -118,12 +118,12 @@ def test_cli_import_info_and_export(smoke_hexa, home, tmp_path):
     out = runner.invoke(cli, ["data", "info", smoke_hexa.dataset_id, "--json"])
     assert out.exit_code == 0, out.output
     info = json.loads(out.output)
-    assert info["trajectories"] == 4 and info["failed"] == 0
+    assert info["trajectories"] == 6 and info["failed"] == 0
     assert info["content_hash"] == smoke_hexa.content_hash
     for name, counts in info["splits"].items():
         assert counts["disjoint"], name
         total = sum(counts[p]["trajectories"] for p in ("train", "val", "test"))
-        assert total <= 4
+        assert total <= 6
     out = runner.invoke(cli, ["data", "export", smoke_hexa.dataset_id, str(tmp_path / "x")])
     assert out.exit_code == 0, out.output
     assert out.output.split() == ["exported", smoke_hexa.dataset_id, "to", str(tmp_path / "x")]
@@ -131,7 +131,7 @@ def test_cli_import_info_and_export(smoke_hexa, home, tmp_path):
     assert out.exit_code == 0, out.output
     again = load_dataset("again")
     assert " ".join(out.output.split()).endswith(  # rich wraps; the plan's lines come first
-        f"imported 4 trajectories ({info['samples']} samples) as again; "
+        f"imported 6 trajectories ({info['samples']} samples) as again; "
         f"content hash {again.content_hash}"
     )
     assert again.n_samples.sum() == info["samples"]

@@ -102,7 +102,9 @@ def test_the_stored_grid_holds_the_grid_and_no_budget():
         assert list(grid) == [*GRID_KEYS[:-1], *noisy, GRID_KEYS[-1]]
         assert (grid["name"], grid["description"]) == (p.name, p.description)
         assert grid["yaws_deg"] == list(p.dataset.yaws_deg(3))
-    assert PRESETS["small"].grid(6)["yaws_deg"] == [30.0 * k for k in range(12)]
+    assert PRESETS["small"].grid(6)["yaws_deg"] == [15.0 * k for k in range(24)]
+    assert PRESETS["small"].grid(9)["yaws_deg"] == [10.0 * k for k in range(36)]
+    assert PRESETS["smoke"].grid(9)["yaws_deg"] == [0.0, 180.0, 250.0]
 
 
 def test_presets_json_is_every_preset_with_every_number():
@@ -264,7 +266,7 @@ def test_sample_efficiency_trains_on_the_presets_fractions(monkeypatch, tmp_path
     e = context.entry  # the plot is named like the run's record: no run overwrites another's
     assert metrics["plot"] == str(
         tmp_path
-        / f"hexa-climb-small-v5__small__{e.name}__{e.variant}__{e.backend}__converge__seed{context.seed}"
+        / f"hexa-climb-small-v5__small__{e.name}__{e.variant}__{e.backend}__seed{context.seed}"
         "-sample-efficiency.png"
     )
     assert list(curve) == ["0.1", "0.25", "0.5", "0.75", "1.0"]  # the published metric keys

@@ -152,7 +152,7 @@ def test_generating_the_smoke_preset_twice_gives_the_same_hash(tmp_path, monkeyp
         monkeypatch.setenv("SYMBENCH_HOME", str(tmp_path / f"w{workers}"))
         reports.append(generate("hexa", "smoke", workers=workers, show_progress=False))
     a, b = reports
-    assert a.content_hash == b.content_hash and a.n_trajectories + a.n_failed == 4
+    assert a.content_hash == b.content_hash and a.n_trajectories + a.n_failed == 6
     for path in sorted((a.root / "trajectories").iterdir()):
         assert path.read_bytes() == (b.root / "trajectories" / path.name).read_bytes()
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import dataclasses
+import itertools
 
 import numpy as np
 import pytest
@@ -137,7 +138,7 @@ def test_no_unseen_rotation_test_climb_is_an_image_of_a_training_climb(robot):
     for offsets_ in (trained, tested):
         assert {round((width - o) % width, 6) for o in offsets_} == offsets_
     between = sorted(trained) + [width]
-    assert all(any(a < o < b for a, b in zip(between, between[1:])) for o in tested)
+    assert all(any(a < o < b for a, b in itertools.pairwise(between)) for o in tested)
 
 
 def test_fractions_are_nested_and_share_the_iid_test_set(hexa_small):
@@ -154,27 +155,27 @@ def test_fractions_are_nested_and_share_the_iid_test_set(hexa_small):
 
 
 def test_smoke_supports_every_standard_split(smoke_hexa):
-    """The smoke preset's 4 trajectories (headings 0 and 180 x yaws 0 and 250) give every
+    """The smoke preset's 6 trajectories (headings 0 and 180 x yaws 0, 180 and 250) give every
     standard split non-empty, disjoint parts that hold out what the split promises."""
     ds = load_dataset(smoke_hexa.dataset_id)
-    assert ds.trajectory_ids.tolist() == [0, 1, 2, 3]
+    assert ds.trajectory_ids.tolist() == [0, 1, 2, 3, 4, 5]
     parts = {name: ds.split_indices(name, 0) for name in STANDARD}
     for name, part in parts.items():
         train, val, test = (set(ids.tolist()) for ids in (part.train, part.val, part.test))
         assert min(len(train), len(val), len(test)) >= 1, name
         assert len(train | val | test) == len(train) + len(val) + len(test), name
-        assert train | val | test <= {0, 1, 2, 3}, name
+        assert train | val | test <= set(range(6)), name
     iid = parts["iid"]
-    assert (len(iid.train), len(iid.val), len(iid.test)) == (2, 1, 1)
-    held_out = {
-        ("unseen-heading", "heading_deg"): 180.0,
-        ("unseen-rotation", "yaw_deg"): 250.0,
-        ("orbit-rotation", "yaw_deg"): 250.0,
+    assert (len(iid.train), len(iid.val), len(iid.test)) == (4, 1, 1)
+    held_out = {  # hexa: 180 is an image of 0, 250 lies between images of 0
+        ("unseen-heading", "heading_deg"): {180.0},
+        ("unseen-rotation", "yaw_deg"): {250.0},
+        ("orbit-rotation", "yaw_deg"): {180.0, 250.0},
     }
-    for (split, field), value in held_out.items():
+    for (split, field), values in held_out.items():
         seen = np.concatenate([parts[split].train, parts[split].val])
         assert _scenario(ds, seen, field) == {0.0}, split
-        assert _scenario(ds, parts[split].test, field) == {value}, split
+        assert _scenario(ds, parts[split].test, field) == values, split
     for share in (0.1, 0.25, 0.5, 0.75):
         part = parts[f"fraction-{share:g}"]
         assert (part.val.tolist(), part.test.tolist()) == (iid.val.tolist(), iid.test.tolist())

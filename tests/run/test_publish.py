@@ -87,13 +87,13 @@ def assert_refused(site: Path, paths: list[Path], message: str, presets=SMOKE) -
 def test_three_seeds_on_the_standard_dataset_are_published(site, valid):
     board = site / "leaderboards"
     assert sorted(p.name for p in (board / "records").iterdir()) == [
-        f"{HEXA}__smoke__iid__sdnn__acc__torch__converge__seed{s}.json" for s in range(3)
+        f"{HEXA}__smoke__iid__sdnn__acc__torch__paper__seed{s}.json" for s in range(3)
     ]
     assert "| 1 | sdnn | acc | torch | 3 |" in (board / "hexa.md").read_text()
     before = snapshot(site)
     written = publish(valid, board, presets=SMOKE)
     assert (
-        board / "records" / f"{HEXA}__smoke__unseen-heading__sdnn__acc__torch__converge__seed2.json"
+        board / "records" / f"{HEXA}__smoke__unseen-heading__sdnn__acc__torch__paper__seed2.json"
         in written
     )
     assert "### unseen-heading" in (board / "hexa.md").read_text()
@@ -242,7 +242,8 @@ def test_refuses_too_few_seeds_and_a_changed_published_record(site, valid, seale
         site,
         valid + [changed],
         (
-            f"{changed}: a different record for {HEXA}__smoke__iid__sdnn__acc__torch__converge__seed0 is "
+            f"{changed}: a different record for "
+            f"{HEXA}__smoke__iid__sdnn__acc__torch__paper__seed0 is "
             "already published; remove it from the board's records first"
         ),
     )
@@ -250,7 +251,10 @@ def test_refuses_too_few_seeds_and_a_changed_published_record(site, valid, seale
 
 def test_refuses_a_board_holding_an_edited_record(site, valid):
     published = (
-        site / "leaderboards" / "records" / f"{HEXA}__smoke__iid__sdnn__acc__torch__converge__seed1.json"
+        site
+        / "leaderboards"
+        / "records"
+        / f"{HEXA}__smoke__iid__sdnn__acc__torch__paper__seed1.json"
     )
     published.write_text(published.read_text().replace('"rmse": 0.1', '"rmse": 0.01'))
     assert_refused(

@@ -124,7 +124,10 @@ def test_a_run_may_choose_the_next_variant(smoke_home, tmp_path):
     )
     record = run(spec)
     assert record.model.variant == "next"
-    assert spec.record_path.name == "hexa-climb-smoke-v5__smoke__iid__sdnn__next__torch__converge__seed0.json"
+    assert (
+        spec.record_path.name
+        == "hexa-climb-smoke-v5__smoke__iid__sdnn__next__torch__converge__seed0.json"
+    )
     assert record.metrics["equivariance"]["max_rel_error"] < 1e-4
     with pytest.raises(UnknownNameError, match="did you mean next"):
         run(RunSpec(model="sdnn", robot="hexa", variant="nxt", output=tmp_path))

@@ -69,6 +69,20 @@ def test_an_interrupted_search_resumes_without_retraining_finished_trials(
     assert len(trained) == 4  # two before the crash, the two left after it
 
 
+def test_a_larger_grid_in_the_same_folder_trains_only_its_new_points(
+    smoke_hexa, tmp_path, monkeypatch
+):
+    run, trained = spec(tmp_path), []
+    real_train = loop.train
+    monkeypatch.setattr(
+        loop, "train", lambda *a, **k: (trained.append(a[3].learning_rate), real_train(*a, **k))[1]
+    )
+    tuning.tune(run, RATES[:1], SCALES, tmp_path, report=lambda _: None)
+    summary = tuning.tune(run, RATES, SCALES, tmp_path, report=lambda _: None)
+    assert summary["complete"] and len(summary["trials"]) == 4
+    assert trained == [RATES[0], RATES[0], RATES[1], RATES[1]]  # the first two not again
+
+
 def test_a_model_without_widths_searches_the_learning_rate_only(smoke_hexa, tmp_path, monkeypatch):
     entry = registry.model("ffnn", "torch")
     monkeypatch.setattr(tuning, "model_entry", lambda _: dataclasses.replace(entry, widths=()))

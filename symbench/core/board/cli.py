@@ -20,16 +20,38 @@ from symbench.core.common.cli_types import SEED, WritableFolder
 @click.option(
     "--out",
     type=WritableFolder(),
+    default=None,
+    show_default="leaderboards",
+    help="Where the Markdown, CSV and PNG files go (with --html: only when given).",
+)
+@click.option(
+    "--html",
+    type=click.Path(path_type=Path, file_okay=False),
+    default=None,
+    help="Build the static HTML site into this folder instead of the Markdown (both when "
+    "--out is given too); a folder a previous build made is replaced whole.",
+)
+@click.option(
+    "--board",
+    type=click.Path(path_type=Path, file_okay=False),
     default=Path("leaderboards"),
     show_default=True,
-    help="Where the Markdown, CSV and PNG files go.",
+    help="The published board; the site's entry pages say whether it holds each record.",
 )
-def leaderboard(results: Path, out: Path) -> None:
-    """Aggregate records (mean ± std over seeds), rank by test RMSE, write tables."""
+def leaderboard(results: Path, out: Path | None, html: Path | None, board: Path) -> None:
+    """Aggregate records (mean ± std over seeds), rank by test RMSE, write tables, or with
+    --html a static site (docs/leaderboard-site.md)."""
     from symbench.core.board.leaderboard import write_leaderboard
+    from symbench.core.board.site import build_site
+    from symbench.core.common.paths import writable_folder
 
-    for path in write_leaderboard(results, out):
-        click.echo(f"wrote {path}")
+    if html is not None:
+        site = build_site(results, html, board)
+        click.echo(f"wrote {html / 'index.html'} and {len(site) - 1} more files of the site")
+    if html is None or out is not None:
+        markdown = out if out is not None else writable_folder(Path("leaderboards"), "--out")
+        for path in write_leaderboard(results, markdown):
+            click.echo(f"wrote {path}")
 
 
 @click.command("publish")

@@ -37,10 +37,12 @@ COLUMNS = {
     ("torque-error", "nrmse"): "nrmse",
     ("equivariance", "max_rel_error"): "equiv_err",
     ("invariance", "max_rel_change"): "invar_change",
-    ("closed-loop", "success_rate"): "cl_success",
-    ("closed-loop", "time_to_failure_s"): "cl_ttf_s",
-    ("closed-loop", "pd_success_rate"): "cl_pd_success",
-    ("closed-loop", "pd_time_to_failure_s"): "cl_pd_ttf_s",
+    # closed loop at the headline PD fraction (the evaluator's `pd_*` metrics): success,
+    # seconds held, joint tracking RMSE and the score between floor (0) and oracle (1)
+    ("closed-loop", "pd_success_rate"): "cl_success",
+    ("closed-loop", "pd_time_to_failure_s"): "cl_held_s",
+    ("closed-loop", "pd_joint_rmse_rad"): "cl_rmse_rad",
+    ("closed-loop", "pd_normalized_score"): "cl_score",
 }
 
 
@@ -165,7 +167,7 @@ def _counts(reasons: pd.Series) -> str:
     return ", ".join(f"{r} {counts[r]}" for r in sorted(counts.index))
 
 
-def _cell(mean: float, std: float) -> str:
+def metric_cell(mean: float, std: float) -> str:
     if np.isnan(mean):
         return "-"
     return f"{mean:.4g}" if np.isnan(std) else f"{mean:.4g} ± {std:.2g}"
@@ -196,7 +198,7 @@ def _split_tables(table: pd.DataFrame, metrics: list[str]) -> list[str]:
             "|---|---|---|---|---|---|" + "---|" * len(metrics) + "---|",
         ]
         for _, row in part.iterrows():
-            cells = [_cell(row[f"{m}_mean"], row[f"{m}_std"]) for m in metrics]
+            cells = [metric_cell(row[f"{m}_mean"], row[f"{m}_std"]) for m in metrics]
             flag = "" if row.seeds >= MIN_SEEDS else f" (<{MIN_SEEDS})"
             lines.append(
                 f"| {row['rank']} | {row.model} | {row.variant} | {row.backend} "

@@ -5,20 +5,38 @@ from __future__ import annotations
 import io
 from collections.abc import Mapping, Sequence
 from pathlib import Path
+from typing import Any
+
+import numpy as np
 
 from symbench.core.common.atomic import write_bytes_atomic
 
 Curve = tuple[Sequence[float], Sequence[float], Sequence[float] | None]  # x, mean, std
+Bar = tuple[float, float]  # mean, std (NaN: one seed)
 
 
-def sample_efficiency_png(curves: Mapping[str, Curve], title: str, path: Path) -> None:
-    """Test RMSE against training fraction, one line per label, written atomically."""
+def _pyplot() -> Any:
+    """pyplot on the Agg backend: no display is needed, on servers and in tests."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    fig, ax = plt.subplots(figsize=(5, 3.5), dpi=120)
+    return plt
+
+
+def _write_png(fig: Any, path: Path) -> None:
+    """The figure as PNG, written atomically; without the matplotlib version in its
+    metadata, so the same data gives the same bytes."""
+    buffer = io.BytesIO()
+    fig.savefig(buffer, format="png", metadata={"Software": None})
+    _pyplot().close(fig)
+    write_bytes_atomic(path, buffer.getvalue())
+
+
+def sample_efficiency_png(curves: Mapping[str, Curve], title: str, path: Path) -> None:
+    """Test RMSE against training fraction, one line per label, written atomically."""
+    fig, ax = _pyplot().subplots(figsize=(5, 3.5), dpi=120)
     for label, (x, mean, std) in curves.items():
         ax.errorbar(x, mean, yerr=std, marker="o", capsize=3, label=label)
     ax.set(
@@ -29,7 +47,26 @@ def sample_efficiency_png(curves: Mapping[str, Curve], title: str, path: Path) -
     )
     ax.legend(fontsize=7)
     fig.tight_layout()
-    buffer = io.BytesIO()
-    fig.savefig(buffer, format="png", metadata={"Software": None})
-    plt.close(fig)
-    write_bytes_atomic(path, buffer.getvalue())
+    _write_png(fig, path)
+
+
+def grouped_bars_png(
+    groups: Mapping[str, Mapping[str, Bar]], ylabel: str, title: str, path: Path
+) -> None:
+    """One group of bars per key of `groups` (a split, say), one bar per label (a model)
+    with its standard deviation, written atomically; a label missing from a group leaves a
+    gap, so a label keeps its place and colour in every group."""
+    labels = sorted({label for bars in groups.values() for label in bars})
+    width = 0.8 / max(len(labels), 1)
+    fig, ax = _pyplot().subplots(figsize=(max(5, 1.2 * len(groups) + 3), 3.5), dpi=120)
+    for i, label in enumerate(labels):
+        x = [g + (i - (len(labels) - 1) / 2) * width for g in range(len(groups))]
+        bars = [groups[group].get(label, (np.nan, np.nan)) for group in groups]
+        means = [mean for mean, _ in bars]
+        stds = [0.0 if np.isnan(std) else std for _, std in bars]
+        ax.bar(x, means, width, yerr=stds, capsize=3, label=label)
+    ax.set_xticks(range(len(groups)), list(groups))
+    ax.set(ylabel=ylabel, title=title)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    _write_png(fig, path)

@@ -14,7 +14,7 @@ import pandas as pd
 SPLIT_ORDER = ("iid", "unseen-heading", "unseen-rotation", "orbit-rotation")
 
 
-def _split_key(split: str) -> tuple[int, float, str]:
+def split_order(split: str) -> tuple[int, float, str]:
     """iid and the unseen splits first, then the fractions in increasing order."""
     if split in SPLIT_ORDER:
         return (0, SPLIT_ORDER.index(split), split)
@@ -54,7 +54,7 @@ def error_section(table: pd.DataFrame, metric: str, title: str) -> list[str]:
         "|---|---|" + "---|" * len(columns),
     ]
     groups = table.groupby(["dataset", "split"], sort=False)
-    for did, split in sorted(groups.groups, key=lambda k: (k[0], _split_key(k[1]))):
+    for did, split in sorted(groups.groups, key=lambda k: (k[0], split_order(k[1]))):
         part = groups.get_group((did, split)).set_index("label")
         cells = [
             _cell(part.at[c, f"{metric}_mean"], part.at[c, f"{metric}_std"])
@@ -67,13 +67,15 @@ def error_section(table: pd.DataFrame, metric: str, title: str) -> list[str]:
 
 
 def closed_loop_section(table: pd.DataFrame) -> list[str]:
-    """Seconds the learned model kept the robot on its reference, alone and with small PD."""
-    if "cl_ttf_s_mean" not in table or table.cl_ttf_s_mean.isna().all():
+    """The closed loop at the headline PD fraction: the model's score between the PD alone
+    (0) and the expert's recorded feedforward (1), and the seconds it held the reference."""
+    if "cl_score_mean" not in table or table.cl_held_s_mean.isna().all():
         return []
-    rows = table[table.cl_ttf_s_mean.notna()]
+    rows = table[table.cl_held_s_mean.notna()]
     columns = _column_order(rows)
     lines = [
-        "## Closed loop: time to failure (s), model alone / with small PD, mean over seeds",
+        "## Closed loop at the headline PD fraction: normalized score (floor 0, oracle 1) "
+        "/ seconds held, mean over seeds",
         "",
         "| dataset | split | " + " | ".join(columns) + " |",
         "|---|---|" + "---|" * len(columns),
@@ -81,7 +83,8 @@ def closed_loop_section(table: pd.DataFrame) -> list[str]:
     for (did, split), part in rows.groupby(["dataset", "split"], sort=True):
         part = part.set_index("label")
         cells = [
-            f"{part.at[c, 'cl_ttf_s_mean']:.3g} / {part.at[c, 'cl_pd_ttf_s_mean']:.3g}"
+            f"{_cell(part.at[c, 'cl_score_mean'], part.at[c, 'cl_score_std'], 2)} / "
+            f"{part.at[c, 'cl_held_s_mean']:.3g}"
             if c in part.index
             else "-"
             for c in columns

@@ -33,7 +33,7 @@ from symbench.core.sim.scenario import Scenario
 
 # 2: yaws beyond a symmetry step carry the gait along; 3: small grid; 4: simulated with pinned
 # numerics (symbench.core.data.determinism), identical on every x86-64 CPU; 5: an even number of
-# yaws per sector (small: at least 24 per turn), smoke's second yaw 250 degrees, so that
+# yaws per sector (small: at least 24 per turn), smoke's yaws 0, 180 and 250 degrees, so that
 # `unseen-rotation` tests yaws between the training yaws (`orbit-rotation` is the old split)
 DATASET_VERSION = 5
 RECORD_PERIOD = 0.006  # s between recorded samples (the paper kept every 6th 1 kHz step)
@@ -46,7 +46,7 @@ class ScenarioGrid:
 
     inclinations_deg: tuple[float, ...]
     headings_deg: tuple[float, ...]
-    yaws_per_turn: int  # at least this many, an even number per sector; 0: just 0 and 250
+    yaws_per_turn: int  # at least this many, an even number per sector; 0: 0, 180, 250
     directions: tuple[str, ...]
     leg_orders: tuple[str, ...]
     seeds: tuple[int, ...]
@@ -56,11 +56,11 @@ class ScenarioGrid:
     def yaws_deg(self, rotation_order: int) -> tuple[float, ...]:
         """Evenly spaced from 0, an even number per sector: every other one of a sector's yaws
         trains `unseen-rotation`, the ones between are its test yaws in the other sectors (even,
-        so that both sets are closed under the robot's mirrors). 0 and 250 (smoke): 250 lies
-        outside the first sector and off every image of 0 for every rotation order from 2 to
-        12."""
+        so that both sets are closed under the robot's mirrors). 0, 180 and 250 (smoke): 180
+        is an image of 0 for every even rotation order, 250 lies outside the first sector and
+        off every image of 0 for every rotation order from 2 to 12."""
         if self.yaws_per_turn == 0:
-            return (0.0, 250.0)
+            return (0.0, 180.0, 250.0)
         per_sector = 2 * math.ceil(self.yaws_per_turn / (2 * rotation_order))
         n = rotation_order * per_sector
         return tuple(round(360.0 * k / n, 9) for k in range(n))

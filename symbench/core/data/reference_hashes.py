@@ -21,18 +21,31 @@ LIBRARY_VERSIONS = {
 }
 
 CONTENT_HASHES = {
-    "magneto-climb-smoke-v4": "58eb30292e052784664403dad7a3cd70278f431c1d11be2a0a95851fa98d19e5",
-    "hexa-climb-smoke-v4": "e3f3bfc9097ec1b783aaff2a23082bfa546542e97c23aa0fe382bf8def851641",
-    "nona-climb-smoke-v4": "22c7067b5e4cef872a3f349eeb2294226bf1464a18a84d57c19eec3be4871b08",
-    "magneto-climb-small-v4": "9b2ad83546142423df94ff3d1da1221474b772fe43fed7d59d8d8ea35f2389b9",
-    "hexa-climb-small-v4": "e5530304f669b3f1fa51373773f6102368903049474cbcf168ca59e747a8ed08",
-    "nona-climb-small-v4": "5526a212002c0e6eabb4afda15547911442a4b93dd272b532342dda98dd02c3c",
-    # data for control: smoke's grid with torque noise (its draws seeded by each scenario)
-    "magneto-climb-smoke-noisy-v4": (
-        "03b2b28754b210e278a74e2981246bad54c5624392bdd19fab3f7ec58cc52020"
+    "magneto-climb-smoke-v5": "7e3f1e165eb001e716ff22380e48870569c2eee705dc5ec01bbe10675a8e03ee",
+    "hexa-climb-smoke-v5": "d24975f3236a76ba5e9427c37c1bf419e950d415882df14dee99f331694be9db",
+    "nona-climb-smoke-v5": "570205b105c68096020a13b5320fef88ece87f08e7de63cdf155d720516239cf",
+    "magneto-climb-small-v5": "23de52021a59354a534947859631b26e3e5a7632b64e87d05139a8c0a624a194",
+    "hexa-climb-small-v5": "a84d3a43f4f743b611cc276661af24c9d424a02d7b68380b5cebf7a2daee86a7",
+    "nona-climb-small-v5": "69919b9be1dc8b22128d1ec4f06e6ab6c5e555f742b25d9e040310b236fb540d",
+    # data for control: the grids with torque noise (its draws seeded by each scenario)
+    "magneto-climb-smoke-noisy-v5": (
+        "6af979c0464e9a0f38e2ff4f32b5851fe3c295d20f683175e112fe604636e196"
     ),
-    "hexa-climb-smoke-noisy-v4": "6905ca397476d2e4a51b71b974c2bd2e55d223b7122487490ad4c9726d8d42c7",
-    "nona-climb-smoke-noisy-v4": "c0d265821be97d80a9667553d183b2a875bd3cdf839dcd2dfe0e0723e367c37b",
+    "hexa-climb-smoke-noisy-v5": (
+        "23561d4ab523556a5876f2eef7a2dd6548f06eb59626a243a46f7506e02dd272"
+    ),
+    "nona-climb-smoke-noisy-v5": (
+        "a3661d8e67738d26236b7a9c0888f96efa86356596b6e9d72aa34593d08ab35b"
+    ),
+    "magneto-climb-small-noisy-v5": (
+        "971714b40301c5c86e5395d6d46cde9047db0aee0be485f0381e6094a67af534"
+    ),
+    "hexa-climb-small-noisy-v5": (
+        "2615e2ff924c499b4fc411b342957dc41212a2dd0321ca9616a9053b19273c8e"
+    ),
+    "nona-climb-small-noisy-v5": (
+        "87b14f4896e069f9b766dd75d1a7e3784f6b31269f3f307ddc8e416cd0a987f0"
+    ),
 }
 
 

@@ -61,7 +61,7 @@ def tune(
     """Train every (learning rate, width scale) of the grid not yet finished in `folder`'s
     journal; returns (and writes) the summary with every trial and the best one."""
     import optuna
-    from optuna.distributions import BaseDistribution, CategoricalDistribution
+    from optuna.distributions import BaseDistribution, FloatDistribution
     from optuna.storages import JournalStorage
     from optuna.storages.journal import JournalFileBackend
     from optuna.trial import TrialState
@@ -73,8 +73,8 @@ def tune(
     scales = tuple(float(s) for s in width_scales) if entry.widths else (1.0,)
     if not rates or any(not 0 < r < 1 for r in rates):
         raise SymbenchError(f"learning rates must be numbers in (0, 1), got {list(rates)}")
-    if any(not s > 0 for s in scales):
-        raise SymbenchError(f"width scales must be positive, got {list(scales)}")
+    if any(not 1e-3 <= s <= 1e3 for s in scales):
+        raise SymbenchError(f"width scales must be in [0.001, 1000], got {list(scales)}")
     base = train_config(spec)
     dataset = ensure_dataset(spec)
     train_set, val_set, _ = dataset.split_views(entry.view, entry.variant, spec.split, spec.seed)
@@ -89,9 +89,11 @@ def tune(
     )
     for stale in study.get_trials(deepcopy=False, states=(TrialState.RUNNING,)):
         study.tell(stale.number, state=TrialState.FAIL)  # cut off by a crash: run again
+    # fixed ranges, not the grid's values: a search started again with a larger grid (more
+    # rates or widths) keeps the points it finished and runs only the new ones
     space: dict[str, BaseDistribution] = {
-        "learning_rate": CategoricalDistribution(rates),
-        "width_scale": CategoricalDistribution(scales),
+        "learning_rate": FloatDistribution(1e-9, 1.0, log=True),
+        "width_scale": FloatDistribution(1e-3, 1e3, log=True),
     }
     grid = list(itertools.product(rates, scales))
 

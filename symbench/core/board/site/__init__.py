@@ -1,0 +1,76 @@
+"""The leaderboard as a static site (`symbench leaderboard --html DIR`): plain files that
+need no server and no network, opened from disk or put on any static host.
+
+Pages (file names in `names`): `index.html` lists the robots, their datasets and protocol
+sections; a board page per (robot, dataset) holds a sortable, filterable table per protocol
+and split and the plots; an entry page per table row (dataset, protocol, split, model,
+variant, backend) shows each seed's provenance, verification status and the commands that
+reproduce it. The numbers are `leaderboard.aggregate`'s, so the site and the Markdown board
+never disagree. The same records give the same bytes: nothing depends on the time of the
+build or on the order of the files.
+
+The site is built whole in a staging folder beside DIR and put in its place, so a failure
+leaves the old site as it was; a non-empty DIR that no build made is refused, not replaced.
+"""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import pandas as pd
+
+from symbench.core.board.leaderboard import aggregate, load_records
+from symbench.core.board.site.names import MARKER
+from symbench.core.board.site.pages import board_pages, entry_pages
+from symbench.core.board.site.plots import draw_plots
+from symbench.core.board.site.render import Renderer
+from symbench.core.common.atomic import replace_folder, staging_folder
+from symbench.core.common.errors import SymbenchError
+from symbench.core.common.paths import writable_folder
+from symbench.core.runs.results import RecordV1
+
+__all__ = ["build_site"]
+
+
+def build_site(results: Path, out: Path, board: Path = Path("leaderboards")) -> list[Path]:
+    """Build the site of the records under `results` into `out`; entry pages say whether
+    the published `board` holds each record. Returns the files written, sorted."""
+    records = load_records(results)
+    table = aggregate(records)
+    _check_replaceable(out)
+    writable_folder(out, "site folder")
+    staging = staging_folder(out)
+    try:
+        written = _build(records, table, board, staging)
+        replace_folder(staging, out)
+    except BaseException:
+        shutil.rmtree(staging, ignore_errors=True)
+        raise
+    return [out / path for path in sorted(written)]
+
+
+def _check_replaceable(out: Path) -> None:
+    if out.exists() and not out.is_dir():
+        raise SymbenchError(f"{out} is a file; give --html a folder")
+    if out.is_dir() and any(out.iterdir()) and not (out / MARKER).is_file():
+        raise SymbenchError(
+            f"{out} holds files that no site build wrote; give --html an empty or new folder"
+        )
+
+
+def _build(
+    records: list[tuple[Path, RecordV1]], table: pd.DataFrame, board: Path, site: Path
+) -> list[str]:
+    renderer = Renderer(site)
+    renderer.static()
+    boards = board_pages(table)
+    for page in boards:
+        rows = table[(table.robot == page.robot) & (table.dataset == page.dataset)]
+        renderer.board(page, draw_plots(rows, page.robot, page.dataset, site))
+    entries = entry_pages(boards, records, board)
+    for entry in entries:
+        renderer.entry(entry)
+    renderer.index(boards, records=len(records), groups=len(entries))
+    (site / MARKER).write_text("built by `symbench leaderboard --html`; replaced whole\n")
+    return [*renderer.written, MARKER]

@@ -1,0 +1,51 @@
+"""Where each file of the site lives, relative to its root: one definition, so that the
+links of every page and the files written agree."""
+
+from __future__ import annotations
+
+import re
+from typing import NamedTuple
+
+INDEX = "index.html"
+STATIC = ("site.css", "site.js")  # copied from the package's static/ into the site's static/
+MARKER = ".symbench-site"  # marks a folder as a site that a new build may replace whole
+_UNSAFE = re.compile(r"[^A-Za-z0-9._-]+")
+_NOT_IN_ID = re.compile(r"[^A-Za-z0-9_-]+")  # '.' too: an id is also a CSS selector
+
+
+class GroupKey(NamedTuple):
+    """A row of a board table: the runs averaged over seeds (as `leaderboard.aggregate`)."""
+
+    dataset: str
+    protocol: str
+    split: str
+    model: str
+    variant: str
+    backend: str
+
+
+def slug(*parts: str) -> str:
+    """`parts` as one file name: letters, digits, '.', '_' and '-' only, never hidden. Record
+    fields are safe identifiers already; this keeps any other name from leaving the site."""
+    return "__".join(_UNSAFE.sub("-", part).lstrip(".") or "-" for part in parts)
+
+
+def board_page(robot: str, dataset: str) -> str:
+    return f"boards/{slug(robot, dataset)}.html"
+
+
+def plot_file(robot: str, dataset: str, plot: str) -> str:
+    return f"boards/{slug(robot, dataset)}-{slug(plot)}.png"
+
+
+def entry_page(key: GroupKey) -> str:
+    return f"entries/{slug(*key)}.html"
+
+
+def static_file(name: str) -> str:
+    return f"static/{name}"
+
+
+def anchor(*parts: str) -> str:
+    """An element id for a section of a page, e.g. `converge--fraction-0-5`."""
+    return "--".join(_NOT_IN_ID.sub("-", part) for part in parts)

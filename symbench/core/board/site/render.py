@@ -1,0 +1,61 @@
+"""The pages as HTML: Jinja2 templates from the package, autoescaped (every record field is
+text to show, never markup), laid out the same for the same data, byte for byte."""
+
+from __future__ import annotations
+
+from importlib.resources import files
+from pathlib import Path
+from typing import Any
+
+from jinja2 import Environment, PackageLoader, StrictUndefined, select_autoescape
+
+from symbench.core.board.site import names
+from symbench.core.board.site.pages import BoardPage, EntryPage
+from symbench.core.board.site.plots import Plot
+
+
+def environment() -> Environment:
+    return Environment(
+        loader=PackageLoader("symbench.core.board.site", "templates"),
+        autoescape=select_autoescape(["html"]),
+        undefined=StrictUndefined,  # a misspelt field fails the build, not the page
+        trim_blocks=True,
+        lstrip_blocks=True,
+        keep_trailing_newline=True,
+    )
+
+
+class Renderer:
+    """Writes the site's files under `site` and remembers them, relative to it."""
+
+    def __init__(self, site: Path) -> None:
+        self.site = site
+        self.env = environment()
+        self.written: list[str] = []
+
+    def _write(self, path: str, data: bytes) -> None:
+        target = self.site / path
+        target.parent.mkdir(parents=True, exist_ok=True)
+        target.write_bytes(data)
+        self.written.append(path)
+
+    def _page(self, template: str, path: str, **context: Any) -> None:
+        # pages below the root reach static files and other pages through ../
+        root = "../" * path.count("/")
+        html = self.env.get_template(template).render(root=root, names=names, **context)
+        self._write(path, html.encode())
+
+    def static(self) -> None:
+        source = files("symbench.core.board.site") / "static"
+        for name in names.STATIC:
+            self._write(names.static_file(name), (source / name).read_bytes())
+
+    def index(self, boards: list[BoardPage], records: int, groups: int) -> None:
+        self._page("index.html", names.INDEX, boards=boards, records=records, groups=groups)
+
+    def board(self, page: BoardPage, plots: tuple[Plot, ...]) -> None:
+        self._page("board.html", page.path, page=page, plots=plots)
+        self.written += [p.path for p in plots if p.path is not None]
+
+    def entry(self, page: EntryPage) -> None:
+        self._page("entry.html", page.path, page=page)

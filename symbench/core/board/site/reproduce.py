@@ -1,0 +1,59 @@
+"""The commands that reproduce a record: `symbench run` with the record's configuration, and
+`symbench verify`, which replays all of it (hyper-parameters and training configuration too)
+and compares every metric."""
+
+from __future__ import annotations
+
+import json
+import shlex
+from pathlib import Path
+
+from symbench.core.board.leaderboard import protocol_of
+from symbench.core.data.presets import PRESETS, dataset_id
+from symbench.core.runs.results import RecordV1
+
+
+def run_command(record: RecordV1) -> str:
+    """`symbench run` with every option the record fixes. The variant and the evaluators are
+    always given (a model's default variant is its plugin's business, and may change); the
+    dataset only when it is not the robot's standard one of the preset, a budget only when
+    it is not the preset's."""
+    m, d = record.model, record.dataset
+    args = ["symbench", "run", "--model", m.name, "--robot", record.robot]
+    if d.preset not in PRESETS or d.id != dataset_id(record.robot, d.preset):
+        args += ["--dataset", d.id]
+    args += ["--split", record.split, "--seed", str(record.seed), "--preset", d.preset]
+    args += ["--backend", m.backend, "--variant", m.variant, "--protocol", protocol_of(record)]
+    args += ["--evaluators", ",".join(record.metrics)]
+    return shlex.join(args + _budget(record))
+
+
+def _budget(record: RecordV1) -> list[str]:
+    """--max-steps (converge) or --max-epochs (paper) when the run's budget was not the
+    preset's; schema-1 records kept no budget."""
+    config = getattr(record.training, "config", None)
+    if config is None or record.dataset.preset not in PRESETS:
+        return []
+    budget = PRESETS[record.dataset.preset].training
+    if config.protocol == "converge" and config.max_steps != budget.max_steps:
+        return ["--max-steps", str(config.max_steps)]
+    if config.protocol == "paper" and config.max_epochs != budget.max_epochs:
+        return ["--max-epochs", str(config.max_epochs)]
+    return []
+
+
+def verify_command(path: Path) -> str:
+    return shlex.join(["symbench", "verify", str(path)])
+
+
+def beyond_run(record: RecordV1) -> str | None:
+    """What the run set that `symbench run` has no option for (overrides of the model's
+    hyper-parameters), or None: `symbench verify` replays it all the same."""
+    config = getattr(record.training, "config", None)
+    if config is None or not config.hyper:
+        return None
+    overrides = json.dumps(config.hyper, sort_keys=True)
+    return (
+        f"The run overrode the model's defaults with {overrides}, which `symbench run` sets "
+        "only through --parameters (matched size); `symbench verify` replays them exactly."
+    )
