@@ -37,12 +37,14 @@ class MLPSizes:
 @dataclass(frozen=True)
 class SDNNSizes:
     """sdnn: per-leg MLPs of `mlp_layers` layers and `latent` units; `steps` processing steps;
-    `mirror` 1 averages the network with its leg-mirrored image (`mirror_signs`)."""
+    `mirror` 1 averages the network with its leg-mirrored image (`mirror_signs`); `ring` 1
+    also gives each leg its two neighbours' latents in every step (`check_ring`)."""
 
     latent: int
     mlp_layers: int
     steps: int
     mirror: int = 0
+    ring: int = 0
 
 
 @dataclass(frozen=True)
@@ -93,6 +95,23 @@ def mirror_signs(dims: ModelDims, mirror: int) -> tuple[np.ndarray, np.ndarray] 
         return None
     inputs = schema.leg_grouped_input(dims.variant).reflection_signs
     return np.asarray(inputs, np.float32), np.asarray(schema.TARGET.reflection_signs, np.float32)
+
+
+def check_ring(ring: int, mirror: int) -> bool:
+    """Whether the processing steps see the neighbours (legs i + 1 and i - 1, cyclically).
+
+    A network that shares weights across legs and sums over them is equivariant to every
+    permutation of the legs: more than any robot's group, and blind to which legs are
+    neighbours. Legs are numbered around the body (each robot's rotations shift them
+    cyclically), so giving leg i the latents of legs i + 1 and i - 1, in that order, keeps
+    the network equivariant to the robot's rotations and narrows it to them: an ablation of
+    that over-constraint. The mirror average assumes every permutation (a mirror swaps the
+    two neighbours), so the two are not combined."""
+    if ring not in (0, 1):
+        raise SymbenchError(f"ring must be 0 or 1, got {ring!r}")
+    if ring and mirror:
+        raise SymbenchError("ring and mirror cannot be combined")
+    return bool(ring)
 
 
 def builder(defaults: Sizes, make: Callable[[ModelDims, Sizes], Any]) -> Callable[..., Any]:

@@ -11,6 +11,7 @@ from symbench.core.common.cli_types import SEED
 from symbench.core.common.console import StdoutConsole
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import BACKENDS
+from symbench.core.runs.options import size_option, sizes_from
 from symbench.core.symmetry.groups import LegGroup
 from symbench.testing.equivariance import EquivarianceReport, check_model
 from symbench.testing.groups import robot_geometry_group
@@ -47,13 +48,9 @@ from symbench.testing.raw_states import robot_frames
     help="The robot's declared group, or its geometry group: the declared rotations with the "
     "mirrors its geometry has (what `symbench sim check` verifies in simulation).",
 )
-@click.option(
-    "--size",
-    "sizes",
-    multiple=True,
-    metavar="NAME=INT",
-    help="A build keyword of the model, e.g. mirror=1 (sdnn, sdgnn: equivariant to mirrors "
-    "too); repeatable.",
+@size_option(
+    "A build keyword of the model, e.g. mirror=1 (sdnn, sdgnn: equivariant to mirrors too); "
+    "repeatable."
 )
 @click.option(
     "--group-of-model",
@@ -87,7 +84,7 @@ def check_equivariance(
         entries = entries or [registry.model(model_name)]  # raises, naming the closest models
     else:
         entries = [registry.model(model_name, backend)]
-    hyper = _sizes(sizes)
+    hyper = sizes_from(sizes)
     group: LegGroup | str = robot_name
     frames = None
     if which_group == "geometry":
@@ -151,14 +148,3 @@ def _print(report: EquivarianceReport) -> None:
         )
     if report.controls:
         console.print(controls)
-
-
-def _sizes(pairs: tuple[str, ...]) -> dict[str, int]:
-    """NAME=INT pairs as build keywords; a malformed one is a usage error naming it."""
-    out = {}
-    for pair in pairs:
-        name, _, value = pair.partition("=")
-        if not name.isidentifier() or not value.lstrip("-").isdigit():
-            raise click.BadParameter(f"{pair!r} is not NAME=INT", param_hint="'--size'")
-        out[name] = int(value)
-    return out

@@ -87,3 +87,10 @@ def test_the_mirror_averaged_twins_agree(name):
     plain, _ = torch_and_jax_outputs(name, 6)
     assert np.abs(y_torch - plain).max() > 1e-3  # the average is another function
     np.testing.assert_allclose(y_jax, y_torch, rtol=0, atol=ATOL)
+
+
+def test_the_ring_twins_agree():
+    """`ring=1` (each leg also sees its neighbours) computes the same in both."""
+    y_torch, y_jax = torch_and_jax_outputs("sdnn", 6, ring=1)
+    assert np.abs(y_torch).max() > 0.1
+    np.testing.assert_allclose(y_jax, y_torch, rtol=0, atol=ATOL)

@@ -35,8 +35,15 @@ SMALL = "hexa-climb-small-v5"
 LOGS = "hexa-logs"  # imported: the smoke trajectories exported and imported again
 
 
-def key(dataset: str, preset: str, model: str = "sdnn", seed: int = 0, variant="acc") -> str:
-    return f"{dataset}__{preset}__iid__{model}__{variant}__torch__converge__seed{seed}"
+def key(
+    dataset: str,
+    preset: str,
+    model: str = "sdnn",
+    seed: int = 0,
+    variant: str = "acc",
+    protocol: str = "converge",
+) -> str:
+    return f"{dataset}__{preset}__iid__{model}__{variant}__torch__{protocol}__seed{seed}"
 
 
 @pytest.fixture(scope="module")
@@ -88,7 +95,7 @@ def sweep_command(out: Path, *args: str):
 
 def test_the_key_names_the_record_file_and_comes_from_the_records_fields(make_record, tmp_path):
     record = write_record(make_record(model="gnn", seed=4), tmp_path / "r.json")
-    assert record.key() == key(SMOKE, "smoke", "gnn", 4)
+    assert record.key() == key(SMOKE, "smoke", "gnn", 4, protocol="paper")  # its config's
     spec = RunSpec(model="gnn", robot="hexa", preset="smoke", seed=4, output=tmp_path)
     assert spec.record_path == tmp_path / f"{key(SMOKE, 'smoke', 'gnn', 4)}.json"
     other = RunSpec(model="gnn", robot="hexa", dataset=LOGS, preset="smoke", seed=4)

@@ -19,3 +19,19 @@ def protocol_option(help_text: str) -> Callable[[Any], Any]:
         show_default=True,
         help=help_text,
     )
+
+
+def size_option(help_text: str) -> Callable[[Any], Any]:
+    """`--size NAME=INT`, repeatable: build keywords of the model (see `sizes_from`)."""
+    return click.option("--size", "sizes", multiple=True, metavar="NAME=INT", help=help_text)
+
+
+def sizes_from(pairs: tuple[str, ...]) -> dict[str, int]:
+    """NAME=INT pairs as build keywords; a malformed one is a usage error naming it."""
+    out = {}
+    for pair in pairs:
+        name, _, value = pair.partition("=")
+        if not name.isidentifier() or not value.lstrip("-").isdigit():
+            raise click.BadParameter(f"{pair!r} is not NAME=INT", param_hint="'--size'")
+        out[name] = int(value)
+    return out

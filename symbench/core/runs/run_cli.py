@@ -18,7 +18,7 @@ from symbench.core.common.cli_types import EPOCHS, SEED, WORKERS, CommaList, Wri
 from symbench.core.common.console import StdoutConsole
 from symbench.core.data.cli import split_option
 from symbench.core.data.presets import PRESETS
-from symbench.core.runs.options import protocol_option
+from symbench.core.runs.options import protocol_option, size_option, sizes_from
 from symbench.core.runs.results import ResultRecord
 from symbench.core.runs.runner import (
     DEFAULT_EVALUATORS,
@@ -131,6 +131,11 @@ from symbench.core.runs.runner import run as run_spec
     help="Scale the model's widths to the parameter count nearest this (compare models at "
     "matched size).",
 )
+@size_option(
+    "A build keyword of the model, e.g. ring=1 (sdnn: each leg also sees its neighbours); "
+    "repeatable, applied after --parameters. The record keeps it; the run's key does not name "
+    "it, so give such runs their own --output."
+)
 @click.option(
     "--overwrite",
     is_flag=True,
@@ -156,6 +161,7 @@ def run(
     max_steps: int | None,
     max_epochs: int | None,
     parameters: int | None,
+    sizes: tuple[str, ...],
     overwrite: bool,
 ) -> None:
     """Train and evaluate MODEL on a robot's standard dataset (generated when missing) or on
@@ -191,6 +197,7 @@ def run(
         max_steps=max_steps,
         max_epochs=max_epochs,
         parameters=parameters,
+        sizes=tuple(sizes_from(sizes).items()),
         dataset=dataset,
         overwrite=overwrite,
     )

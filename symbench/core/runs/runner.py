@@ -77,6 +77,7 @@ class RunSpec:
     max_steps: int | None = None  # None: the preset's budget (converge)
     max_epochs: int | None = None  # None: the preset's cap (paper)
     parameters: int | None = None  # the model's widths scaled to this parameter count
+    sizes: tuple[tuple[str, int], ...] = ()  # build keywords set by name (`--size`), last
     # TrainConfig fields replacing the protocol's defaults (`symbench verify` replays a
     # record's); seed, protocol, budgets and progress always come from the fields above
     train_config: dict[str, Any] = field(default_factory=dict)
@@ -133,7 +134,13 @@ def check_names(spec: RunSpec) -> None:
     """Every name resolves and every number is valid before any minute is spent (closest
     names otherwise); the dataset exists (or is a standard one, made when missing) and holds
     the run's robot."""
-    model_entry(spec)
+    entry = model_entry(spec)
+    unknown = sorted(set(dict(spec.sizes)) - set(build_hyperparameters(entry, {})))
+    if unknown:
+        raise SymbenchError(
+            f"model {entry.name} has no build keyword {', '.join(unknown)} (it has: "
+            f"{', '.join(build_hyperparameters(entry, {})) or 'none'})"
+        )
     registry.robot(spec.robot)
     check_split(spec.split)  # a registered split, or a column split's name
     for name in spec.evaluators:
@@ -198,12 +205,12 @@ def train_config(spec: RunSpec) -> TrainConfig:
             f"{other[spec.protocol][1]} is a budget of the other protocol, not of "
             f"'{spec.protocol}' (converge: --max-steps; paper: --max-epochs)"
         )
-    matched = {"hyper": matched_size(spec)} if spec.parameters is not None else {}
+    hyper = {**(matched_size(spec) if spec.parameters is not None else {}), **dict(spec.sizes)}
     return TrainConfig(
         **{
             "eval_every": budget.eval_every,
             "patience": budget.patience,
-            **matched,
+            **({"hyper": hyper} if hyper else {}),
             **spec.train_config,
             "seed": spec.seed,
             "progress": spec.progress,

@@ -12,7 +12,7 @@ from pathlib import Path
 import click
 
 from symbench.core.common.cli_types import SEED, WORKERS, CommaList, WritableFolder
-from symbench.core.runs.options import protocol_option
+from symbench.core.runs.options import protocol_option, size_option, sizes_from
 from symbench.core.runs.runner import DEFAULT_EVALUATORS, RunSpec, default_preset
 
 
@@ -81,6 +81,10 @@ from symbench.core.runs.runner import DEFAULT_EVALUATORS, RunSpec, default_prese
     default=None,
     help="Scale every model's widths to the parameter count nearest this (matched size).",
 )
+@size_option(
+    "A build keyword of every model, e.g. ring=1 (see `symbench run`); repeatable. Give such "
+    "runs their own --output."
+)
 @click.option(
     "--evaluators", default=",".join(DEFAULT_EVALUATORS), show_default=True, type=CommaList()
 )
@@ -119,6 +123,7 @@ def sweep(
     variant: str | None,
     protocol: str,
     parameters: int | None,
+    sizes: tuple[str, ...],
     evaluators: list[str],
     output: Path,
     workers: int,
@@ -145,6 +150,7 @@ def sweep(
         variant=variant,
         protocol=protocol,
         parameters=parameters,
+        sizes=tuple(sizes_from(sizes).items()),
         evaluators=tuple(evaluators),
         output=output,
         workers=workers,

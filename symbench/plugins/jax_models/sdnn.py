@@ -1,7 +1,8 @@
 """SDNN: one MLP shared by all legs, with repeated steps that see the sum over legs.
 
 Sharing weights across legs and aggregating by a sum make the network equivariant to every
-permutation of legs, hence to the robot's rotation group.
+permutation of legs, hence to the robot's rotation group; with `ring` 1 each step also sees
+the two neighbouring legs, which narrows it to the rotations (`architectures.check_ring`).
 """
 
 from __future__ import annotations
@@ -10,7 +11,7 @@ import flax.linen as nn
 import jax.numpy as jnp
 
 from symbench.plugins.architectures import SDNN as DEFAULTS
-from symbench.plugins.architectures import as_tuples, builder, mirror_signs
+from symbench.plugins.architectures import as_tuples, builder, check_ring, mirror_signs
 from symbench.plugins.jax_models.layers import LatentMLP, mirror_average
 
 
@@ -19,18 +20,22 @@ class SDNN(nn.Module):
     mlp_layers: int
     steps: int
     signs: tuple | None = None  # the leg mirror's (input, output) signs, as tuples
+    ring: bool = False  # each step also sees legs i + 1 and i - 1
 
     @nn.compact
     def __call__(self, x: jnp.ndarray) -> jnp.ndarray:
         return mirror_average(x, self.equivariant, self.signs)
 
     def equivariant(self, x: jnp.ndarray) -> jnp.ndarray:
-        """The network itself: equivariant to every permutation of legs."""
+        """The network itself: equivariant to every permutation of legs (with `ring`, to
+        the cyclic shifts only)."""
         h = LatentMLP(self.latent, self.mlp_layers, name="enc")(x)
         for k in range(self.steps):
-            total = jnp.broadcast_to(h.sum(axis=1, keepdims=True), h.shape)
+            seen = [h, jnp.broadcast_to(h.sum(axis=1, keepdims=True), h.shape)]
+            if self.ring:
+                seen += [jnp.roll(h, -1, axis=1), jnp.roll(h, 1, axis=1)]
             h = h + LatentMLP(self.latent, self.mlp_layers, name=f"proc{k}")(
-                jnp.concatenate([h, total], axis=-1)
+                jnp.concatenate(seen, axis=-1)
             )
         h = LatentMLP(self.latent, self.mlp_layers, name="dec")(h)
         return nn.Dense(3, name="out")(h)
@@ -38,5 +43,11 @@ class SDNN(nn.Module):
 
 build = builder(
     DEFAULTS,
-    lambda dims, s: SDNN(s.latent, s.mlp_layers, s.steps, as_tuples(mirror_signs(dims, s.mirror))),
+    lambda dims, s: SDNN(
+        s.latent,
+        s.mlp_layers,
+        s.steps,
+        as_tuples(mirror_signs(dims, s.mirror)),
+        check_ring(s.ring, s.mirror),
+    ),
 )
