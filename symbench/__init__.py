@@ -13,7 +13,7 @@ Building models
 Writing evaluators
     EvaluationContext, TrainedOnSplit, rmse, relative_error, act_on_raw,
     rotate_scene_about_gravity, rotate_scene, Scenario, simulate, track, build_view,
-    sample_efficiency_png
+    sample_efficiency_png, held_out_scenarios, reference_scenarios, oracle_policy
 Writing splits
     SplitContext, carve_validation
 Reading a preset's sizes, budgets and horizons (`symbench presets`)
@@ -64,6 +64,9 @@ _PUBLIC: dict[str, str] = {
     "Scenario": "symbench.core.sim.scenario:Scenario",
     "simulate": "symbench.core.sim.rollout:simulate",
     "track": "symbench.core.sim.learned_control:track",
+    "held_out_scenarios": "symbench.core.sim.references:held_out_scenarios",
+    "reference_scenarios": "symbench.core.sim.references:reference_scenarios",
+    "oracle_policy": "symbench.core.sim.references:oracle_policy",
     "build_view": "symbench.core.data.views:build_view",
     "sample_efficiency_png": "symbench.core.board.plots:sample_efficiency_png",
     "SplitContext": "symbench.core.data.splits:SplitContext",
@@ -104,10 +107,13 @@ __all__ = [
     "act_on_raw",
     "build_view",
     "carve_validation",
+    "held_out_scenarios",
     "hookimpl",
     "load_robot",
     "model_entry",
+    "oracle_policy",
     "preset",
+    "reference_scenarios",
     "relative_error",
     "rmse",
     "rotate_scene",
@@ -172,6 +178,11 @@ if TYPE_CHECKING:  # what type checkers and editors see
         rmse,
     )
     from symbench.core.sim.learned_control import track
+    from symbench.core.sim.references import (
+        held_out_scenarios,
+        oracle_policy,
+        reference_scenarios,
+    )
     from symbench.core.sim.rollout import simulate
     from symbench.core.sim.scenario import Scenario
     from symbench.core.training.loop import TrainConfig, train

@@ -4,7 +4,8 @@ and read back as plain JSON to know what the pages must show.
 hexa's smoke dataset (converge protocol): three models on iid, an unseen split and a
 fraction, three seeds each, closed-loop metrics on iid. The NRMSE ranks the models the other
 way round from the RMSE, so that sorting by it changes the order. ffnn trained on twice the
-preset's budget (its command says so), gnn with a hyper-parameter override (a note says so).
+preset's budget (its command says so), gnn with a hyper-parameter override (its command
+sets it with --size).
 Beside them on hexa: a schema-1 model (unsealed; the paper protocol). On nona: one model on
 iid only, so that its page has no plot.
 """

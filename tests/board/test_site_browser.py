@@ -10,11 +10,7 @@ that does not work."""
 
 from __future__ import annotations
 
-import fcntl
 import os
-import shutil
-import subprocess
-import tempfile
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -23,45 +19,19 @@ from typing import Any
 import numpy as np
 import pytest
 from site_records import HEXA, MODELS, SEEDS, SPLITS, metric, runs_of, table_id
+from system_packages import ensure_chromium
 
 pytestmark = pytest.mark.slow
 
 ROOT = Path(__file__).resolve().parents[2]
 ARTIFACTS = Path(os.environ.get("SYMBENCH_TEST_ARTIFACTS", ROOT / "test-artifacts"))
-INSTALL = (["apt-get", "update"], ["apt-get", "install", "-y", "chromium"])
-NEEDS = "the browser tests need the Debian package chromium (root and package access)"
 PNG = b"\x89PNG\r\n\x1a\n"
 HEXA_PAGE = f"boards/hexa__{HEXA}.html"
 
 
 @pytest.fixture(scope="session")
 def chromium() -> str:
-    """The system's Chromium, installed with apt-get when it is missing; one installation at
-    a time (pytest-xdist's workers each ask), the others wait for it."""
-    with open(Path(tempfile.gettempdir()) / "symbench-chromium-install.lock", "w") as lock:
-        fcntl.flock(lock, fcntl.LOCK_EX)
-        if shutil.which("chromium") is None:
-            install_chromium()
-    found = shutil.which("chromium")
-    if found is None:
-        pytest.fail("apt-get installed chromium, but there is no `chromium` on PATH")
-    return found
-
-
-def install_chromium() -> None:
-    environment = {**os.environ, "DEBIAN_FRONTEND": "noninteractive"}
-    for command in INSTALL:
-        try:
-            done = subprocess.run(
-                command, capture_output=True, text=True, env=environment, timeout=1800
-            )
-        except OSError as exc:
-            pytest.fail(f"cannot run `{' '.join(command)}` ({exc}): {NEEDS}")
-        if done.returncode != 0:
-            pytest.fail(
-                f"`{' '.join(command)}` failed (exit {done.returncode}): {NEEDS}\n"
-                + done.stderr[-2000:]
-            )
+    return ensure_chromium()
 
 
 @pytest.fixture(scope="session")

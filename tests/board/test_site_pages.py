@@ -184,11 +184,8 @@ def test_entry_pages_show_each_seeds_provenance_and_how_to_reproduce_it(site, re
         f"{site.parent / 'board' / 'records' / ResultRecord.model_validate(r).key()}.json)"
         for r in runs
     ]
-    assert "note" not in page.texts
-    assert (
-        'overrode the model\'s defaults with {"latent": 64}'
-        in entry(site, "iid", "gnn").texts["note"][0]
-    )
+    gnn = entry(site, "iid", "gnn").texts["reproduce"]
+    assert all(command.endswith(" --size latent=64") for command in gnn)  # its override
 
 
 def test_schema_1_records_are_shown_but_not_verified(site, results):

@@ -38,15 +38,43 @@ from symbench.core.common.cli_types import SEED, WritableFolder
     show_default=True,
     help="The published board; the site's entry pages say whether it holds each record.",
 )
-def leaderboard(results: Path, out: Path | None, html: Path | None, board: Path) -> None:
+@click.option(
+    "--clips",
+    is_flag=True,
+    help="With --html: on each robot's page, a clip of the closed-loop climb of its best and "
+    "worst model beside the expert's, rendered from the runs' checkpoints under --results "
+    "(rendering: MUJOCO_GL=osmesa unless set, docs/leaderboard-site.md).",
+)
+@click.option(
+    "--clips-from",
+    type=click.Path(path_type=Path, exists=True, file_okay=False),
+    default=None,
+    help="The results folder holding the runs' checkpoints, when it is not --results "
+    "(implies --clips).",
+)
+def leaderboard(
+    results: Path,
+    out: Path | None,
+    html: Path | None,
+    board: Path,
+    clips: bool,
+    clips_from: Path | None,
+) -> None:
     """Aggregate records (mean ± std over seeds), rank by test RMSE, write tables, or with
     --html a static site (docs/leaderboard-site.md)."""
     from symbench.core.board.leaderboard import write_leaderboard
     from symbench.core.board.site import build_site
     from symbench.core.common.paths import writable_folder
 
+    checkpoints = clips_from if clips_from is not None else results if clips else None
+    if checkpoints is not None and html is None:
+        raise click.UsageError("--clips and --clips-from need --html")
+    if checkpoints is not None:
+        from symbench.core.sim.render import use_software_gl
+
+        use_software_gl()  # before anything loads MuJoCo
     if html is not None:
-        site = build_site(results, html, board)
+        site = build_site(results, html, board, checkpoints)
         click.echo(f"wrote {html / 'index.html'} and {len(site) - 1} more files of the site")
     if html is None or out is not None:
         markdown = out if out is not None else writable_folder(Path("leaderboards"), "--out")

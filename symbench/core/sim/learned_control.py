@@ -39,6 +39,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -54,6 +55,9 @@ LOOKAHEAD_S = 0.006  # s: the record period of the standard datasets (the `next`
 Policy = Callable[[dict[str, np.ndarray]], np.ndarray]
 # the raw columns row 0 takes from the simulation (the others come from the reference)
 MEASURED = ("t", "base_pos", "base_quat", "base_linvel", "base_angvel", "q", "qd", "contact")
+# called after every physics step with the dm-control Physics at the new time (read-only: a
+# recorder for rendering, symbench.core.sim.render)
+Observer = Callable[[Any], None]
 
 
 @dataclass(frozen=True)
@@ -91,9 +95,11 @@ def track(
     policy: Policy,
     pd_gains: tuple[float, float] = (0.0, 0.0),
     lookahead: float = LOOKAHEAD_S,
+    observe: Observer | None = None,
 ) -> Tracking:
     """Run `policy` on `scenario` against `reference` (raw columns at every physics step,
-    see `expert_reference`) over the reference's whole length."""
+    see `expert_reference`) over the reference's whole length; `observe`, when given, sees
+    the physics after every step (it must not change it)."""
     import mujoco
 
     from symbench.core.sim.setup import Climb
@@ -181,6 +187,8 @@ def track(
         ctrl[magnet] = plan.targets(t).magnet
         mujoco.mj_step2(model, data)
         mujoco.mj_step1(model, data)
+        if observe is not None:
+            observe(physics)
     held = float(data.time) if failure is not None else n_rows * dt
     if last < 0:
         return Tracking(False, failure, held, float("nan"), 0)

@@ -55,7 +55,8 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from symbench import EvaluationContext
+from symbench import EvaluationContext, reference_scenarios
+from symbench import held_out_scenarios as held_out_scenarios  # kept importable from here
 
 NAME = "closed-loop"
 DESCRIPTION = (
@@ -81,21 +82,13 @@ def evaluate(context: EvaluationContext) -> dict:
     budget = context.preset.closed_loop
     control = context.robot.control
     fractions = tuple(float(f) for f in budget.pd_fractions)
-    chosen = held_out_scenarios(
+    scenarios = reference_scenarios(
         context.dataset,
         context.test_trajectories,
         budget.references,
+        budget.seconds,
         context.robot.group.rotation_order,
     )
-    # each reference tracked over its climb's length, capped at the preset's horizon; the
-    # expert's climb without noise (when the run's own dataset is a noisy one)
-    scenarios = [
-        {
-            **{k: v for k, v in fields.items() if k != "torque_noise"},
-            "seconds": min(float(fields.get("seconds", budget.seconds)), budget.seconds),
-        }
-        for fields in chosen
-    ]
     calibration = _calibration(context, scenarios, fractions, float(budget.headline_pd))
     runs: dict[str, dict[float, list]] = {row: {f: [] for f in fractions} for row in ROWS}
     tried, horizons, orbits = len(scenarios), [], []
@@ -156,7 +149,7 @@ def _calibration(
     sweep pays it once. The oracle runs once, at `oracle_pd`: on the reference the PD and
     the residual vanish, so the applied torque is the recorded one at every fraction (the
     tests pin the replay at each)."""
-    from symbench import Scenario, __version__, simulate
+    from symbench import Scenario, __version__, oracle_policy, simulate
 
     control = context.robot.control
     key = {
@@ -185,10 +178,6 @@ def _calibration(
             out.append(None)
             continue
         ref = reference.arrays
-        dt = float(ref["t"][1] - ref["t"][0])
-
-        def oracle(rows: dict[str, np.ndarray], ref=ref, dt=dt) -> np.ndarray:
-            return ref["tau"][int(round(float(rows["t"][0]) / dt))]
 
         def floor(rows: dict[str, np.ndarray], ref=ref) -> np.ndarray:
             return np.zeros_like(ref["tau"][0])
@@ -196,7 +185,7 @@ def _calibration(
         def gains(f: float) -> tuple[float, float]:
             return f * control.kp, f * control.kd
 
-        replay = track(scenario, ref, oracle, gains(oracle_pd))
+        replay = track(scenario, ref, oracle_policy(ref), gains(oracle_pd))
         floors = {f: track(scenario, ref, floor, gains(f)) for f in fractions}
         out.append((scenario, ref, replay, floors))
     _write_calibration(folder, key, out)
@@ -257,48 +246,6 @@ def _read_calibration(folder: Path, key: dict, fractions: tuple[float, ...]) -> 
         return out
     except (OSError, ValueError, KeyError, TypeError):
         return None
-
-
-def held_out_scenarios(dataset, test_ids: np.ndarray, n: int, rotation_order: int = 1) -> list:
-    """Scenarios of up to n test trajectories from distinct symmetry orbits, deterministic.
-
-    Two scenarios whose yaws differ by a rotation of the robot's group (360 / order
-    degrees) are images of each other (turned base, relabelled legs), so they share an
-    orbit; so are climbs that differ only in heading, the whole scene turned about gravity,
-    but the robot's group does not make them images, so they count as distinct after all
-    the others. Test trajectories are taken in id order (ids skip the trajectories that
-    failed in generation, so they are not positions): first one per orbit of the robot's
-    motion (inclination, direction, leg order, yaw within the sector), then one per further
-    heading of those.
-    """
-    by_id = dict(zip(np.asarray(dataset.trajectory_ids).tolist(), dataset.scenarios))
-    sector = 360.0 / max(int(rotation_order), 1)
-    candidates = [by_id[int(i)] for i in sorted(np.asarray(test_ids).tolist()) if int(i) in by_id]
-
-    def motion(s: dict) -> tuple:
-        yaw = round(float(s.get("yaw_deg", 0.0)) % sector, 6) % sector
-        order = s.get("leg_order")
-        return (
-            float(s.get("inclination_deg", 0.0)),
-            s.get("direction", "forward"),
-            tuple(order) if order is not None else None,
-            yaw,
-        )
-
-    chosen: list[dict] = []
-    motions: set[tuple] = set()
-    orbits: set[tuple] = set()
-    for s in candidates:  # one per motion
-        if len(chosen) < n and motion(s) not in motions:
-            motions.add(motion(s))
-            orbits.add((*motion(s), float(s.get("heading_deg", 0.0)) % 360.0))
-            chosen.append(s)
-    for s in candidates:  # then other headings of those motions
-        orbit = (*motion(s), float(s.get("heading_deg", 0.0)) % 360.0)
-        if len(chosen) < n and orbit not in orbits:
-            orbits.add(orbit)
-            chosen.append(s)
-    return chosen
 
 
 def _describe(fields: dict) -> str:

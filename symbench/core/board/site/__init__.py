@@ -9,6 +9,9 @@ reproduce it. The numbers are `leaderboard.aggregate`'s, so the site and the Mar
 never disagree. The same records give the same bytes: nothing depends on the time of the
 build or on the order of the files.
 
+With `clips` (a results folder holding the runs' checkpoints) each board page also shows
+clips of the closed loop, the best and the worst model climbing beside the expert (`clips`).
+
 The site is built whole in a staging folder beside DIR and put in its place, so a failure
 leaves the old site as it was; a non-empty DIR that no build made is refused, not replaced.
 """
@@ -21,6 +24,7 @@ from pathlib import Path
 import pandas as pd
 
 from symbench.core.board.leaderboard import aggregate, load_records
+from symbench.core.board.site.clips import ClipPlan, clip_plan, draw_clips
 from symbench.core.board.site.names import MARKER
 from symbench.core.board.site.pages import board_pages, entry_pages
 from symbench.core.board.site.plots import draw_plots
@@ -33,16 +37,20 @@ from symbench.core.runs.results import RecordV1
 __all__ = ["build_site"]
 
 
-def build_site(results: Path, out: Path, board: Path = Path("leaderboards")) -> list[Path]:
+def build_site(
+    results: Path, out: Path, board: Path = Path("leaderboards"), clips: Path | None = None
+) -> list[Path]:
     """Build the site of the records under `results` into `out`; entry pages say whether
-    the published `board` holds each record. Returns the files written, sorted."""
+    the published `board` holds each record; with `clips`, the results folder whose
+    checkpoints the clips load, board pages show them. Returns the files written, sorted."""
     records = load_records(results)
     table = aggregate(records)
+    planned = None if clips is None else clip_plan(table, records, clips)
     _check_replaceable(out)
     writable_folder(out, "site folder")
     staging = staging_folder(out)
     try:
-        written = _build(records, table, board, staging)
+        written = _build(records, table, board, staging, planned)
         replace_folder(staging, out)
     except BaseException:
         shutil.rmtree(staging, ignore_errors=True)
@@ -60,14 +68,21 @@ def _check_replaceable(out: Path) -> None:
 
 
 def _build(
-    records: list[tuple[Path, RecordV1]], table: pd.DataFrame, board: Path, site: Path
+    records: list[tuple[Path, RecordV1]],
+    table: pd.DataFrame,
+    board: Path,
+    site: Path,
+    clips: ClipPlan | None,
 ) -> list[str]:
     renderer = Renderer(site)
     renderer.static()
     boards = board_pages(table)
     for page in boards:
         rows = table[(table.robot == page.robot) & (table.dataset == page.dataset)]
-        renderer.board(page, draw_plots(rows, page.robot, page.dataset, site))
+        plots = draw_plots(rows, page.robot, page.dataset, site)
+        page_clips = None if clips is None else clips[page.robot, page.dataset]
+        drawn = None if page_clips is None else draw_clips(page_clips, site)
+        renderer.board(page, plots, drawn)
     entries = entry_pages(boards, records, board)
     for entry in entries:
         renderer.entry(entry)

@@ -38,6 +38,10 @@ def plot_file(robot: str, dataset: str, plot: str) -> str:
     return f"boards/{slug(robot, dataset)}-{slug(plot)}.png"
 
 
+def clip_file(robot: str, dataset: str, role: str, model: str) -> str:
+    return f"clips/{slug(robot, dataset)}-{slug(role)}-{slug(model)}.webp"
+
+
 def entry_page(key: GroupKey) -> str:
     return f"entries/{slug(*key)}.html"
 

@@ -141,12 +141,13 @@ def group_of(record: RecordV1) -> GroupKey:
     )
 
 
-def _key(row: pd.Series) -> GroupKey:
+def row_key(row: pd.Series) -> GroupKey:
+    """The group of an aggregate row."""
     return GroupKey(row.dataset, row.protocol, row.split, row.model, row.variant, row.backend)
 
 
 def _row(row: pd.Series, page_columns: tuple[Column, ...]) -> Row:
-    key = _key(row)
+    key = row_key(row)
     cells = tuple(c.read(row) for c in page_columns)
     return Row(key, int(row["rank"]), names.entry_page(key), cells)
 

@@ -12,7 +12,7 @@ from typing import Any
 
 from symbench.core.board.leaderboard import protocol_of
 from symbench.core.board.publish import RECORDS
-from symbench.core.board.site.reproduce import beyond_run, run_command, verify_command
+from symbench.core.board.site.reproduce import run_command, verify_command
 from symbench.core.common.errors import SymbenchError
 from symbench.core.runs.results import RecordV1, read_display_record, read_record
 
@@ -29,7 +29,6 @@ class Provenance:
     sections: tuple[tuple[str, Fields], ...]  # (title, fields)
     reproduce: str
     verify: str
-    note: str | None  # what `reproduce` cannot express
 
 
 def provenance(path: Path, record: RecordV1, board: Path) -> Provenance:
@@ -53,7 +52,6 @@ def provenance(path: Path, record: RecordV1, board: Path) -> Provenance:
         ),
         reproduce=run_command(record),
         verify=verify_command(path),
-        note=beyond_run(record),
     )
 
 

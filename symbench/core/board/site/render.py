@@ -10,6 +10,7 @@ from typing import Any
 from jinja2 import Environment, PackageLoader, StrictUndefined, select_autoescape
 
 from symbench.core.board.site import names
+from symbench.core.board.site.clips import Clip
 from symbench.core.board.site.pages import BoardPage, EntryPage
 from symbench.core.board.site.plots import Plot
 
@@ -53,9 +54,13 @@ class Renderer:
     def index(self, boards: list[BoardPage], records: int, groups: int) -> None:
         self._page("index.html", names.INDEX, boards=boards, records=records, groups=groups)
 
-    def board(self, page: BoardPage, plots: tuple[Plot, ...]) -> None:
-        self._page("board.html", page.path, page=page, plots=plots)
+    def board(
+        self, page: BoardPage, plots: tuple[Plot, ...], clips: tuple[Clip, ...] | None = None
+    ) -> None:
+        """`clips` None: a site built without clips (no section for them)."""
+        self._page("board.html", page.path, page=page, plots=plots, clips=clips)
         self.written += [p.path for p in plots if p.path is not None]
+        self.written += [c.path for c in clips or ()]
 
     def entry(self, page: EntryPage) -> None:
         self._page("entry.html", page.path, page=page)

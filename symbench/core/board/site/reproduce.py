@@ -1,10 +1,8 @@
 """The commands that reproduce a record: `symbench run` with the record's configuration, and
-`symbench verify`, which replays all of it (hyper-parameters and training configuration too)
-and compares every metric."""
+`symbench verify`, which replays all of it and compares every metric."""
 
 from __future__ import annotations
 
-import json
 import shlex
 from pathlib import Path
 
@@ -17,7 +15,7 @@ def run_command(record: RecordV1) -> str:
     """`symbench run` with every option the record fixes. The variant and the evaluators are
     always given (a model's default variant is its plugin's business, and may change); the
     dataset only when it is not the robot's standard one of the preset, a budget only when
-    it is not the preset's."""
+    it is not the preset's, the build keywords the run set."""
     m, d = record.model, record.dataset
     args = ["symbench", "run", "--model", m.name, "--robot", record.robot]
     if d.preset not in PRESETS or d.id != dataset_id(record.robot, d.preset):
@@ -25,7 +23,15 @@ def run_command(record: RecordV1) -> str:
     args += ["--split", record.split, "--seed", str(record.seed), "--preset", d.preset]
     args += ["--backend", m.backend, "--variant", m.variant, "--protocol", protocol_of(record)]
     args += ["--evaluators", ",".join(record.metrics)]
-    return shlex.join(args + _budget(record))
+    return shlex.join(args + _budget(record) + _sizes(record))
+
+
+def _sizes(record: RecordV1) -> list[str]:
+    """--size NAME=VALUE for every build keyword the run set (by --size or --parameters):
+    the same network either way."""
+    config = getattr(record.training, "config", None)
+    hyper = config.hyper if config is not None else {}
+    return [arg for name in sorted(hyper) for arg in ("--size", f"{name}={hyper[name]}")]
 
 
 def _budget(record: RecordV1) -> list[str]:
@@ -44,16 +50,3 @@ def _budget(record: RecordV1) -> list[str]:
 
 def verify_command(path: Path) -> str:
     return shlex.join(["symbench", "verify", str(path)])
-
-
-def beyond_run(record: RecordV1) -> str | None:
-    """What the run set that `symbench run` has no option for (overrides of the model's
-    hyper-parameters), or None: `symbench verify` replays it all the same."""
-    config = getattr(record.training, "config", None)
-    if config is None or not config.hyper:
-        return None
-    overrides = json.dumps(config.hyper, sort_keys=True)
-    return (
-        f"The run overrode the model's defaults with {overrides}, which `symbench run` sets "
-        "only through --parameters (matched size); `symbench verify` replays them exactly."
-    )

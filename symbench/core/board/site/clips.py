@@ -1,0 +1,282 @@
+"""Clips of the closed loop on a board page (`symbench leaderboard --html --clips`): the best
+and the worst model of the dataset climbing beside the expert, so the difference is seen.
+
+- Which models: among the page's groups on the iid split whose records ran the closed-loop
+  evaluator, the best and the worst by mean `pd_normalized_score` (the closed loop's
+  headline, between the PD alone and the expert's feedforward); where no group has that
+  score (it is undefined when the two hold alike), by mean test torque RMSE. Ties keep the
+  table's order. The group's seed-0 record is shown (its lowest seed, when it has no 0).
+- Which model file: the closed loop's own, the run's architecture trained on the `next`
+  variant of `trained_on`, loaded from the checkpoint the run left under its results folder
+  (`checkpoints/<run key>/<dataset hash>/[<trained_on>-<hash>/]iid__next/best`): nothing is
+  retrained, and a missing checkpoint is an error naming it.
+- Which climb: the first reference the evaluator tracked (`reference_scenarios`, the first
+  the expert holds), at the preset's headline PD fraction. The expert's side is the
+  expert's recorded torques replayed with the same gains (`oracle_policy`: its climb again,
+  to rounding), since a recorded reference lacks the passive ankle joints a pose needs.
+
+Each clip is rendered by symbench.core.sim.render (both sides from one fixed camera on the
+reference's path, so a model that strays is seen straying; a failed climb holds its last
+state) and written as `clips/<robot>__<dataset>-<best|worst>-<model>.webp`.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, replace
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+import numpy as np
+import pandas as pd
+from PIL import Image
+
+from symbench.core.board.leaderboard import COLUMNS, protocol_of
+from symbench.core.board.site import names
+from symbench.core.board.site.names import GroupKey
+from symbench.core.board.site.pages import CLOSED_LOOP, group_of, row_key
+from symbench.core.common.atomic import write_bytes_atomic
+from symbench.core.common.errors import SymbenchError
+from symbench.core.data.presets import preset
+from symbench.core.runs.results import RecordV1
+from symbench.core.sim.learned_control import Policy, Tracking, expert_reference, track
+from symbench.core.sim.references import oracle_policy, reference_scenarios
+from symbench.core.sim.render import (
+    Camera,
+    ClimbRenderer,
+    Recording,
+    frame_times,
+    labelled,
+    side_by_side,
+    webp,
+)
+from symbench.core.sim.scenario import Scenario
+
+if TYPE_CHECKING:
+    from symbench.core.data.dataset import Dataset
+    from symbench.core.data.frames import LegFrames
+    from symbench.core.training.trained_model import TrainedModel
+
+SPLIT = "iid"
+SCORE = COLUMNS[(CLOSED_LOOP, "pd_normalized_score")]
+RMSE = COLUMNS[("torque-error", "rmse")]
+
+
+@dataclass(frozen=True)
+class Clip:
+    title: str
+    path: str  # the WebP, relative to the site's root
+    entry: str  # the group's entry page
+    caption: str
+
+
+@dataclass(frozen=True)
+class Choice:
+    role: str  # "best" or "worst"
+    key: GroupKey
+    path: Path  # the record shown
+    record: RecordV1
+    ranked_by: str
+
+
+def choose(rows: pd.DataFrame, records: list[tuple[Path, RecordV1]]) -> list[Choice]:
+    """The best and the worst group among one page's aggregate `rows` (one when a single
+    group qualifies, none when none ran the closed loop on iid), each with its record."""
+    shown: dict[GroupKey, tuple[Path, RecordV1]] = {}
+    for path, record in records:
+        key = group_of(record)
+        if key.split == SPLIT and "trained_on" in record.metrics.get(CLOSED_LOOP, {}):
+            if key not in shown or record.seed < shown[key][1].seed:
+                shown[key] = (path, record)
+    candidates = rows[[row_key(row) in shown for _, row in rows.iterrows()]]
+    if candidates.empty:
+        return []
+    column = f"{SCORE}_mean"
+    scored = candidates[candidates[column].notna()] if column in candidates else candidates[:0]
+    if scored.empty:
+        ranked, by = candidates.sort_values(f"{RMSE}_mean", kind="stable"), "test torque RMSE"
+    else:
+        ranked = scored.sort_values(column, ascending=False, kind="stable")
+        by = "closed-loop score"
+    ends = [("best", ranked.iloc[0]), ("worst", ranked.iloc[-1])][: min(len(ranked), 2)]
+    return [Choice(role, row_key(row), *shown[row_key(row)], by) for role, row in ends]
+
+
+def checkpoint_folder(path: Path, record: RecordV1, results: Path) -> Path:
+    """The closed loop's model of `record` (at `path`) under `results`, as the run left it;
+    an error naming what is missing otherwise."""
+    from symbench.core.training.resume import BEST_DIR
+    from symbench.core.training.trained_model import TENSORS
+
+    trained_on = record.metrics[CLOSED_LOOP]["trained_on"]
+    run = Path(results) / "checkpoints" / record.key() / record.dataset.content_hash[:12]
+    # retrained on another dataset (the noisy one) it lies in that dataset's folder
+    on = f"{trained_on}-*/" if trained_on != record.dataset.id else ""
+    pattern = f"{on}{SPLIT}__next"
+    found = sorted(f / BEST_DIR for f in run.glob(pattern) if (f / BEST_DIR / TENSORS).is_file())
+    if not found:
+        raise SymbenchError(
+            f"no closed-loop checkpoint for the clip of {path}: nothing at "
+            f"{run / pattern / BEST_DIR}; give --clips-from the results folder of its run"
+        )
+    if len(found) > 1:
+        raise SymbenchError(
+            f"several closed-loop checkpoints for {path} ({', '.join(map(str, found))}): "
+            "remove the stale ones"
+        )
+    return found[0]
+
+
+# per (robot, dataset): each clip's choice with its checkpoint
+ClipPlan = dict[tuple[str, str], tuple[tuple[Choice, Path], ...]]
+
+
+def clip_plan(table: pd.DataFrame, records: list[tuple[Path, RecordV1]], results: Path) -> ClipPlan:
+    """Per (robot, dataset) of the aggregate `table`: the clips' choices, each with its
+    checkpoint under `results`, all found before anything is rendered or written."""
+    return {
+        (str(robot), str(did)): tuple(
+            (c, checkpoint_folder(c.path, c.record, results)) for c in choose(rows, records)
+        )
+        for (robot, did), rows in table.groupby(["robot", "dataset"], sort=True)
+    }
+
+
+def closed_loop_model(checkpoint: Path, record: RecordV1) -> TrainedModel:
+    """The trained model the closed-loop evaluator of `record` tracked with, loaded from its
+    finished `checkpoint`: never retrained."""
+    from symbench.core.plugin import registry
+    from symbench.core.training.trained_model import TrainedModel
+
+    entry = replace(registry.model(record.model.name, record.model.backend), variant="next")
+    model = TrainedModel.load(checkpoint, entry)
+    if not model.stopped:
+        raise SymbenchError(f"{checkpoint} is not a finished training; run {record.key()} again")
+    return model
+
+
+@dataclass
+class Scene:
+    """A reference climb with the expert's side of its clip, shared by the page's models."""
+
+    scenario: Scenario
+    reference: dict[str, np.ndarray]  # the expert's climb at every physics step
+    renderer: ClimbRenderer
+    camera: Camera  # the clip's, fixed on the expert's path
+    expert: list[Image.Image]  # the expert's labelled frames
+
+
+def draw_clips(planned: tuple[tuple[Choice, Path], ...], site: Path) -> tuple[Clip, ...]:
+    """The clips of one board page (its part of `clip_plan`), written under `site`."""
+    if not planned:
+        return ()
+    models = [closed_loop_model(checkpoint, c.record) for c, checkpoint in planned]
+    dataset = _dataset(planned[0][0].record)  # the page's: one dataset
+    scenes: dict[str, Scene] = {}
+    try:
+        return tuple(
+            _clip(c, m, dataset, site, scenes) for (c, _), m in zip(planned, models, strict=True)
+        )
+    finally:
+        for scene in scenes.values():
+            scene.renderer.close()
+
+
+def _clip(
+    choice: Choice, model: TrainedModel, dataset: Dataset, site: Path, scenes: dict[str, Scene]
+) -> Clip:
+    record = choice.record
+    headline = float(preset(record.dataset.preset).closed_loop.headline_pd)
+    control = dataset.spec.control
+    gains = (headline * control.kp, headline * control.kd)
+    scene = _scene(record, dataset, gains, scenes)
+    learned = Recording()
+    policy = feedforward_policy(model, dataset.frames)
+    result = track(scene.scenario, scene.reference, policy, gains, observe=learned)
+    times = frame_times(scene.scenario.seconds)
+    poses = learned.at(times, scene.renderer.initial)
+    fell = f"failed at {result.time_to_failure_s:.2f} s"
+    title = f"{record.model.name} (PD {headline:g})"
+    frames = []
+    for expert, frame, t in zip(
+        scene.expert, scene.renderer.frames(poses, scene.camera), times, strict=True
+    ):
+        failed = not result.attached and t >= result.time_to_failure_s
+        frames.append(side_by_side(expert, labelled(frame, title, fell if failed else "", failed)))
+    path = names.clip_file(record.robot, record.dataset.id, choice.role, record.model.name)
+    write_bytes_atomic(site / path, webp(frames))
+    return Clip(
+        f"{choice.role.capitalize()} by {choice.ranked_by}: {record.model.name}",
+        path,
+        names.entry_page(choice.key),
+        _caption(choice, result, scene.scenario.seconds, headline),
+    )
+
+
+def _scene(
+    record: RecordV1, dataset: Dataset, gains: tuple[float, float], scenes: dict[str, Scene]
+) -> Scene:
+    """The first reference climb of `record`'s closed loop, with the expert's frames; made
+    once per reference and gains."""
+    budget = preset(record.dataset.preset).closed_loop
+    test = dataset.split_indices(record.split, record.seed).test
+    rotation = dataset.spec.group.rotation_order
+    for fields in reference_scenarios(dataset, test, budget.references, budget.seconds, rotation):
+        key = json.dumps([fields, gains], sort_keys=True)
+        if key in scenes:
+            return scenes[key]
+        scenario = Scenario.from_dict(fields)
+        reference = expert_reference(scenario)
+        if not reference.attached:  # the evaluator skips it too
+            continue
+        expert = Recording()
+        track(scenario, reference.arrays, oracle_policy(reference.arrays), gains, observe=expert)
+        renderer = ClimbRenderer(scenario)
+        camera = renderer.camera(reference.arrays["base_pos"])
+        times = frame_times(scenario.seconds)
+        frames = renderer.frames(expert.at(times, renderer.initial), camera)
+        labels = [labelled(f, "expert", f"t = {t:.2f} s") for f, t in zip(frames, times)]
+        scenes[key] = Scene(scenario, reference.arrays, renderer, camera, labels)
+        return scenes[key]
+    raise SymbenchError(
+        f"no clip for {record.key()}: the expert fell on every closed-loop reference"
+    )
+
+
+def _dataset(record: RecordV1) -> Dataset:
+    """The record's dataset from the cache, with the record's content hash."""
+    from symbench.core.data.dataset import load_dataset
+
+    dataset = load_dataset(record.dataset.id)
+    if dataset.content_hash != record.dataset.content_hash:
+        raise SymbenchError(
+            f"no clip for {record.key()}: it was made on dataset {record.dataset.id} with "
+            f"content hash {record.dataset.content_hash[:12]}..., the cache holds "
+            f"{dataset.content_hash[:12]}..."
+        )
+    return dataset
+
+
+def feedforward_policy(model: TrainedModel, frames: LegFrames) -> Policy:
+    """The model as `track`'s policy, as the closed-loop evaluator drives it."""
+    from symbench.core.data.views import build_view
+
+    pair = np.zeros(2, dtype=np.int64)
+
+    def policy(rows: dict[str, np.ndarray]) -> np.ndarray:
+        return model.predict(build_view(rows, pair, frames, model.entry.view, "next").inputs)[0]
+
+    return policy
+
+
+def _caption(choice: Choice, result: Tracking, horizon: float, headline: float) -> str:
+    r, key = choice.record, choice.key
+    metrics = r.metrics[CLOSED_LOOP]
+    climb = (metrics.get("orbits") or ["?"])[0]
+    outcome = "held the whole climb" if result.attached else f"failed: {result.failure}"
+    return (
+        f"{r.model.name} ({key.variant}, {key.backend}, {protocol_of(r)} protocol), split "
+        f"{r.split}, seed {r.seed}, trained for the closed loop on {metrics['trained_on']}; "
+        f"PD at {headline:g} of the servo gains on the evaluator's first reference climb "
+        f"({climb}): held {result.time_to_failure_s:.2f} s of {horizon:.2f} s, {outcome}."
+    )
