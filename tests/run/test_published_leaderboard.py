@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import re
 from pathlib import Path
 
 import pytest
@@ -10,9 +11,12 @@ from click.testing import CliRunner
 
 from symbench.core.board.leaderboard import load_records
 from symbench.core.board.publish import publish
+from symbench.core.board.site import build_site
 from symbench.core.cli import build_cli
 
-BOARD = Path(__file__).resolve().parents[2] / "leaderboards"
+ROOT = Path(__file__).resolve().parents[2]
+BOARD = ROOT / "leaderboards"
+SITE = BOARD / "site"
 MADE = (".md", ".csv", ".png")
 
 
@@ -24,15 +28,51 @@ def _made_files(folder: Path) -> dict[str, bytes]:
     }
 
 
-def test_committed_tables_regenerate_identically(tmp_path):
+ABLATIONS = BOARD / "ablations"
+
+
+@pytest.mark.parametrize(
+    "board",
+    [BOARD, ABLATIONS / "sdnn-ring", ABLATIONS / "sdnn-matched-size"],
+    ids=["main", "ring", "matched-size"],
+)
+def test_committed_tables_regenerate_identically(board, tmp_path):
     result = CliRunner().invoke(
-        build_cli(), ["leaderboard", "--results", str(BOARD / "records"), "--out", str(tmp_path)]
+        build_cli(), ["leaderboard", "--results", str(board / "records"), "--out", str(tmp_path)]
     )
     assert result.exit_code == 0, result.output
-    made, committed = _made_files(tmp_path), _made_files(BOARD)
+    made, committed = _made_files(tmp_path), _made_files(board)
     assert sorted(made) == sorted(committed)
     for name, content in made.items():
-        assert content == committed[name], f"leaderboards/{name} is not what the records give"
+        assert content == committed[name], f"{board}/{name} is not what the records give"
+
+
+def _without_clips(page: str) -> str:
+    """A board page as a build without clips writes it: the clips' link and section gone."""
+    page = page.replace('\n· <a href="#clips">clips</a>', "")
+    return re.sub(r'\n<section id="clips">.*?</section>', "", page, flags=re.S)
+
+
+def test_the_committed_site_regenerates_from_the_records(tmp_path, monkeypatch):
+    """leaderboards/site/ is `symbench leaderboard --results leaderboards/records --html
+    leaderboards/site --clips-from RESULTS`, run from the repository's root. The clips come
+    from the runs' checkpoints, which are not committed: every other byte is rebuilt here,
+    and every clip a page shows is in the site."""
+    monkeypatch.chdir(ROOT)
+    build_site(Path("leaderboards/records"), tmp_path / "site", Path("leaderboards"))
+    made = {p.relative_to(tmp_path / "site"): p for p in (tmp_path / "site").rglob("*")}
+    committed = {p.relative_to(SITE): p for p in SITE.rglob("*")}
+    clips = {name for name in committed if name.parts[0] == "clips"}
+    assert sorted(made) == sorted(set(committed) - clips)
+    for name, path in made.items():
+        if path.is_dir():
+            continue
+        if name.parts[0] == "boards" and name.suffix == ".html":
+            shown = set(re.findall(r'src="\.\./(clips/[^"]+)"', committed[name].read_text()))
+            assert {Path(c) for c in shown} <= clips, name
+            assert path.read_text() == _without_clips(committed[name].read_text()), name
+        else:
+            assert path.read_bytes() == committed[name].read_bytes(), name
 
 
 def test_every_committed_record_names_a_clean_commit():
