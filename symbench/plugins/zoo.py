@@ -49,7 +49,7 @@ ARCHITECTURES = (
         "gnn",
         "body_graph",
         False,
-        1e-3,
+        3e-3,
         f"typical graph network (bodies as nodes, joints as edges), {GNN.steps} steps",
         ("edge", "node", "glob"),
     ),
