@@ -28,8 +28,8 @@ from symbench.core.runs.results import read_record, write_record
 SYMBENCH = str(Path(sys.executable).parent / "symbench")
 
 
-def sweep_command(output: Path, *extra: str) -> list[str]:
-    """Four quick runs on the stand-in smoke dataset, two at a time."""
+def sweep_command(output: Path, *extra: str, seeds: str = "0,1") -> list[str]:
+    """Quick runs on the stand-in smoke dataset (four with the default seeds), two at a time."""
     return [
         SYMBENCH,
         "sweep",
@@ -38,7 +38,7 @@ def sweep_command(output: Path, *extra: str) -> list[str]:
         "--robots",
         "hexa",
         "--seeds",
-        "0,1",
+        seeds,
         "--preset",
         "smoke",
         "--evaluators",
@@ -95,18 +95,20 @@ def test_sweep_workers_exit_when_the_sweep_is_killed(smoke_hexa, home, tmp_path)
 
 
 def test_ctrl_c_summary_counts_every_finished_run(smoke_hexa, home, tmp_path):
-    with running(sweep_command(tmp_path / "results"), home) as proc:
+    """Twelve runs, so that on a loaded machine the sweep is still busy when both workers
+    are up and Ctrl-C arrives (with four, a slow second worker let them all finish first)."""
+    with running(sweep_command(tmp_path / "results", seeds="0,1,2,3,4,5"), home) as proc:
         workers_of(proc, 2)
         os.kill(proc.pid, signal.SIGINT)  # the runs under way finish while the sweep stops
         output = proc.communicate(timeout=300)[0]
     assert proc.returncode == 1, output
     found = re.search(
-        r"interrupted with (\d) of 4 runs finished; run the same command again", output
+        r"interrupted with (\d+) of 12 runs finished; run the same command again", output
     )
     assert found, output
     records = list((tmp_path / "results").glob("*.json"))
     assert all(read_record(r) for r in records)
-    assert int(found.group(1)) == len(records) < 4
+    assert int(found.group(1)) == len(records) < 12
 
 
 def test_a_ray_address_where_no_cluster_answers_is_an_error_within_seconds(

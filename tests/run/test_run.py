@@ -176,7 +176,13 @@ def test_a_record_carries_what_it_takes_to_rerun_it(smoke_home, tmp_path):
         "version": symbench.__version__,
         "source_sha256": sha256_of(sources.encode()),
     }
-    assert record.model.hyperparameters == {"latent": 128, "mlp_layers": 2, "steps": 2, "mirror": 0}
+    assert record.model.hyperparameters == {
+        "latent": 128,
+        "mlp_layers": 2,
+        "steps": 2,
+        "mirror": 0,
+        "ring": 0,
+    }
     assert record.training.config.model_dump() == {
         "seed": 0,
         "batch_size": 64,
@@ -187,7 +193,7 @@ def test_a_record_carries_what_it_takes_to_rerun_it(smoke_home, tmp_path):
         "max_epochs": 3,
         "stop_ratio": 0.7,
         "stop_patience": 5,
-        "learning_rate": 5e-4,
+        "learning_rate": 1.5e-3,
         "hyper": {},
         "compile": False,
     }
@@ -211,4 +217,5 @@ def test_provenance_of_a_third_party_model_and_of_overridden_hyperparameters():
         "mlp_layers": 2,
         "steps": 2,
         "mirror": 0,
+        "ring": 0,
     }
