@@ -51,9 +51,16 @@ def sweep_command(output: Path, *extra: str, seeds: str = "0,1") -> list[str]:
     ]
 
 
+def _default_sigint() -> None:
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+
 @contextlib.contextmanager
 def running(command: list[str], home: Path) -> Iterator[subprocess.Popen]:
-    """`command` in a session of its own, whatever is left of which is killed at the end."""
+    """`command` in a session of its own, whatever is left of which is killed at the end.
+    A Ctrl-C reaches it as a terminal's would: SIGINT at its default even when the tests run
+    where it is ignored (a shell's background job inherits SIGINT ignored, and Python then
+    never raises KeyboardInterrupt)."""
     proc = subprocess.Popen(
         command,
         env={**os.environ, "SYMBENCH_HOME": str(home)},
@@ -61,6 +68,7 @@ def running(command: list[str], home: Path) -> Iterator[subprocess.Popen]:
         stderr=subprocess.STDOUT,
         text=True,
         start_new_session=True,
+        preexec_fn=_default_sigint,
     )
     try:
         yield proc
