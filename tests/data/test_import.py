@@ -212,6 +212,14 @@ def test_unknown_contact_is_stored_and_views_refuse(home, tmp_path):
         ds.view("leg_grouped", "acc")
 
 
+def test_a_period_too_short_for_any_log_is_refused_in_one_line(home, tmp_path):
+    """Found by the import property test: 1e-320 s made the decimation factor infinite."""
+    folder = _write_log(tmp_path / "logs")
+    _manifest(folder, record_period_s=1e-320)
+    with pytest.raises(SymbenchError, match=r"record_period_s .* s is shorter than 1e-06 s"):
+        import_logs(folder, "logs")
+
+
 def test_a_longer_period_is_refused_and_the_hash_ignores_path_and_id(home, tmp_path):
     folder = _write_log(tmp_path / "logs", edit=lambda c: c.__setitem__("t", c["t"] * 2))
     _manifest(folder, record_period_s=0.012)

@@ -39,6 +39,7 @@ UNKNOWABLE = ("contact", "magnet")  # columns a log may declare unknown
 BASE_VECTORS = ("base_linvel", "base_angvel", "base_linacc")  # what base_frame applies to
 FLAGS = ("contact", "magnet")
 PERIOD_TOLERANCE = 0.05  # relative
+MIN_LOG_PERIOD = 1e-6  # s: 1 MHz, beyond any robot's logging
 
 
 def body_to_world(arrays: Mapping[str, np.ndarray]) -> dict[str, np.ndarray]:
@@ -85,6 +86,11 @@ def derivative(t: np.ndarray, x: np.ndarray, step: float) -> np.ndarray:
 def resample_plan(log_period: float, record_period: float) -> tuple[str, int]:
     """("keep", 1), ("decimate", k) or ("interpolate", 0) for a log of `log_period`; an error
     for a period longer than the record period."""
+    if log_period < MIN_LOG_PERIOD:  # also keeps record_period / log_period finite
+        raise SymbenchError(
+            f"record_period_s {log_period:g} s is shorter than {MIN_LOG_PERIOD:g} s: not the "
+            "period of a robot's log"
+        )
     tolerance = PERIOD_TOLERANCE * record_period
     if abs(log_period - record_period) <= tolerance:
         return "keep", 1
