@@ -120,6 +120,13 @@ class Timer:
             self.timings[name] = self.timings.get(name, 0.0) + time.perf_counter() - start
 
 
+def checkpoint_root(output: Path, key: str, content_hash: str) -> Path:
+    """Where a run keeps its checkpoints: per run key and dataset version (its content hash),
+    so a regenerated dataset trains afresh instead of resuming; a retraining on another
+    dataset lies under `<dataset id>-<hash>/`, each training in `<split>__<variant>/`."""
+    return Path(output) / "checkpoints" / key / content_hash[:12]
+
+
 def model_entry(spec: RunSpec):
     """The registered model, with the run's input variant when it names one."""
     entry = registry.model(spec.model, spec.backend)
@@ -379,8 +386,7 @@ def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> 
     on_stage("dataset")
     dataset = timer.measure("dataset_s", ensure_dataset, spec)
     _check_replaceable(spec, dataset.content_hash)
-    # per dataset version, so a regenerated dataset trains afresh instead of resuming
-    checkpoints = spec.output / "checkpoints" / spec.key() / dataset.content_hash[:12]
+    checkpoints = checkpoint_root(spec.output, spec.key(), dataset.content_hash)
 
     def train_on(split: str, variant: str):
         model_of = replace(entry, variant=variant)

@@ -39,6 +39,7 @@ from symbench.core.common.atomic import write_bytes_atomic
 from symbench.core.common.errors import SymbenchError
 from symbench.core.data.presets import preset
 from symbench.core.runs.results import RecordV1
+from symbench.core.runs.runner import checkpoint_root
 from symbench.core.sim.learned_control import Policy, Tracking, expert_reference, track
 from symbench.core.sim.references import oracle_policy, reference_scenarios
 from symbench.core.sim.render import (
@@ -109,7 +110,7 @@ def checkpoint_folder(path: Path, record: RecordV1, results: Path) -> Path:
     from symbench.core.training.trained_model import TENSORS
 
     trained_on = record.metrics[CLOSED_LOOP]["trained_on"]
-    run = Path(results) / "checkpoints" / record.key() / record.dataset.content_hash[:12]
+    run = checkpoint_root(results, record.key(), record.dataset.content_hash)
     # retrained on another dataset (the noisy one) it lies in that dataset's folder
     on = f"{trained_on}-*/" if trained_on != record.dataset.id else ""
     pattern = f"{on}{SPLIT}__next"
