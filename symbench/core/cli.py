@@ -161,8 +161,10 @@ def rows_table(title: str, rows: list[dict], console: Console) -> Table:
     rows = [{c: _shown(v) for c, v in r.items()} for r in rows]
     widths = {c: max([len(c), *(len(r.get(c, "")) for r in rows)]) for c in columns}
     table = Table(title=title)
-    for i, c in enumerate(columns):  # the first column (names) is never folded
-        table.add_column(c, overflow="fold", min_width=widths[c] if i == 0 else None)
+    for i, c in enumerate(columns):  # the first column (names) is never folded (no_wrap: rich
+        # would otherwise try to narrow the widest column first and crop the table instead)
+        first = i == 0
+        table.add_column(c, overflow="fold", min_width=widths[c] if first else None, no_wrap=first)
     for row in rows:
         table.add_row(*(row.get(c, "") for c in columns))
     # the names in full, every other column at least 12 characters (or its longest value)

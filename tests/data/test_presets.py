@@ -30,6 +30,12 @@ SMALL_TRAINING = Training(max_steps=10000, eval_every=500, patience=6, max_epoch
 BUDGETS = {
     "smoke": {"training": SMOKE_TRAINING, "horizon_s": 1.0, "references": 2, "grid_seconds": 1.0},
     "small": {"training": SMALL_TRAINING, "horizon_s": 2.6, "references": 6, "grid_seconds": 2.6},
+    "transfer": {
+        "training": SMALL_TRAINING,
+        "horizon_s": 2.6,
+        "references": 6,
+        "grid_seconds": 2.6,
+    },
     "paper": {
         "training": Training(max_steps=200000, eval_every=2000, patience=10, max_epochs=500),
         "horizon_s": 10.0,
@@ -53,6 +59,7 @@ BUDGETS = {
 TRAIN_PRESETS = {
     "smoke": "smoke-noisy",
     "small": "small-noisy",
+    "transfer": None,
     "paper": None,
     "smoke-noisy": "smoke-noisy",
     "small-noisy": "small-noisy",

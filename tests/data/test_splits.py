@@ -19,18 +19,21 @@ from symbench.core.plugin import registry
 from symbench.core.plugin.entries import SplitEntry
 from symbench.core.plugin.host import PluginHost, set_host
 from symbench.core.robot.specs import load_robot
-from symbench.plugins.splits.assign import unseen_rotation
+from symbench.plugins.splits.assign import unseen_gait, unseen_inclination, unseen_rotation
 
 STANDARD = (
     "iid",
     "unseen-heading",
     "unseen-rotation",
     "orbit-rotation",
+    "unseen-inclination",
+    "unseen-gait",
     "fraction-0.1",
     "fraction-0.25",
     "fraction-0.5",
     "fraction-0.75",
 )
+TRANSFER_ONLY = ("unseen-inclination", "unseen-gait")  # small and smoke vary neither
 
 
 def short_grid(robot: str, name: str = "small", seconds: float = 0.1):
@@ -40,6 +43,19 @@ def short_grid(robot: str, name: str = "small", seconds: float = 0.1):
     spec = load_robot(robot)
     grid = preset(name).scenarios(robot, spec.n_legs, spec.group.rotation_order)
     return [dataclasses.replace(s, seconds=seconds) for s in grid]
+
+
+def grid_context(robot: str, name: str) -> SplitContext:
+    """A split's view of a preset's grid, without simulating it."""
+    grid = short_grid(robot, name)
+    return SplitContext(
+        dataset_id=f"{robot}-{name}",
+        trajectory_ids=np.arange(len(grid)),
+        scenarios=tuple(s.to_dict() for s in grid),
+        n_samples=np.ones(len(grid), dtype=int),
+        rotation_order=load_robot(robot).group.rotation_order,
+        seed=0,
+    )
 
 
 @pytest.fixture
@@ -64,8 +80,29 @@ def test_the_standard_splits_are_registered():
     assert set(STANDARD) <= set(registry.collect("splits"))
 
 
+@pytest.fixture
+def hexa_transfer(home):
+    generate(
+        "hexa",
+        "transfer",
+        simulator=fake_simulate,
+        show_progress=False,
+        scenarios=short_grid("hexa", "transfer"),
+        id_override="hexa-transfer-short",
+    )
+    return load_dataset("hexa-transfer-short")
+
+
 @pytest.mark.parametrize("name", STANDARD)
-def test_parts_are_disjoint_deterministic_and_select_whole_trajectories(hexa_small, name):
+def test_parts_are_disjoint_deterministic_and_select_whole_trajectories(
+    hexa_small, hexa_transfer, name
+):
+    # small varies neither slope nor gait; the transfer grid is made for those two splits
+    data = hexa_transfer if name in TRANSFER_ONLY else hexa_small
+    _check_parts(data, name)
+
+
+def _check_parts(hexa_small, name):
     parts = hexa_small.split_indices(name, seed=3)
     ids = np.concatenate([parts.train, parts.val, parts.test])
     assert len(np.unique(ids)) == len(ids)
@@ -141,6 +178,58 @@ def test_no_unseen_rotation_test_climb_is_an_image_of_a_training_climb(robot):
     assert all(any(a < o < b for a, b in itertools.pairwise(between)) for o in tested)
 
 
+@pytest.mark.parametrize("robot", ["magneto", "hexa", "nona"])
+def test_unseen_inclination_tests_slopes_beyond_every_training_slope(robot):
+    """On every robot's transfer grid: floor to wall trains, overhangs and the ceiling test;
+    every other field's values are on both sides, so only the slope is held out."""
+    context = grid_context(robot, "transfer")
+    labels = unseen_inclination(context)
+    inclinations = context.values("inclination_deg").astype(float)
+    seen = np.isin(labels, ["train", "val"])
+    assert set(inclinations[seen].tolist()) == {0.0, 30.0, 60.0, 90.0}
+    assert set(inclinations[labels == "test"].tolist()) == {120.0, 150.0, 180.0}
+    assert inclinations[labels == "test"].min() > inclinations[seen].max()
+    for field in ("yaw_deg", "direction"):
+        values = np.array([str(v) for v in context.values(field)])
+        assert set(values[seen]) == set(values[labels == "test"]), field
+
+
+@pytest.mark.parametrize("robot", ["magneto", "hexa", "nona"])
+def test_no_unseen_gait_test_climb_is_a_rotated_training_climb(robot):
+    """On every robot's transfer grid the test climbs step in the reversed order, the training
+    climbs in the default one, and no rotation of the robot's group relabels the one sequence
+    into the other (as cyclic sequences): a test gait is never a rotated training gait."""
+    context = grid_context(robot, "transfer")
+    labels = unseen_gait(context)
+    n_legs = load_robot(robot).n_legs
+    orders = [tuple(s["leg_order"] or range(n_legs)) for s in context.scenarios]
+    seen = np.isin(labels, ["train", "val"])
+    assert {o for o, s in zip(orders, seen) if s} == {tuple(range(n_legs))}
+    tested = {o for o, s in zip(orders, labels == "test") if s}
+    assert tested == {tuple(range(n_legs - 1, -1, -1))}
+
+    def cyclic_forms(order):
+        return {order[k:] + order[:k] for k in range(len(order))}
+
+    rotations = [g for g in load_robot(robot).group if not g.reflect]
+    assert len(rotations) == load_robot(robot).group.rotation_order
+    for g in rotations:
+        relabelled = {tuple(g.perm[leg] for leg in o) for o in tested}
+        assert not any(cyclic_forms(o) & cyclic_forms(tuple(range(n_legs))) for o in relabelled)
+
+
+@pytest.mark.parametrize(
+    ("split", "message"),
+    [
+        (unseen_inclination, "unseen-inclination needs at least 2 inclinations, found \\[90.0\\]"),
+        (unseen_gait, "unseen-gait needs climbs with the default leg order and climbs with"),
+    ],
+)
+def test_the_slope_and_gait_splits_refuse_a_grid_without_either(split, message):
+    with pytest.raises(SymbenchError, match=message):
+        split(grid_context("hexa", "small"))
+
+
 def test_fractions_are_nested_and_share_the_iid_test_set(hexa_small):
     iid = hexa_small.split_indices("iid", 5)
     previous: set[int] = set()
@@ -156,10 +245,11 @@ def test_fractions_are_nested_and_share_the_iid_test_set(hexa_small):
 
 def test_smoke_supports_every_standard_split(smoke_hexa):
     """The smoke preset's 6 trajectories (headings 0 and 180 x yaws 0, 180 and 250) give every
-    standard split non-empty, disjoint parts that hold out what the split promises."""
+    standard split but the slope and gait ones non-empty, disjoint parts that hold out what
+    the split promises."""
     ds = load_dataset(smoke_hexa.dataset_id)
     assert ds.trajectory_ids.tolist() == [0, 1, 2, 3, 4, 5]
-    parts = {name: ds.split_indices(name, 0) for name in STANDARD}
+    parts = {name: ds.split_indices(name, 0) for name in STANDARD if name not in TRANSFER_ONLY}
     for name, part in parts.items():
         train, val, test = (set(ids.tolist()) for ids in (part.train, part.val, part.test))
         assert min(len(train), len(val), len(test)) >= 1, name

@@ -66,6 +66,14 @@ def values_of(meta: dict, ids: list[int]) -> dict[str, list]:
         values = {scenario[i].get(column) for i in ids} - {None}
         if values:
             out[column] = sorted(values, key=lambda v: (isinstance(v, str), v))
+    orders = {  # the stepping sequence: absent, default (None), reversed, or the legs in order
+        "default" if o is None else "reversed" if o == sorted(o)[::-1] else ",".join(map(str, o))
+        for i in ids
+        if "leg_order" in scenario[i]
+        for o in [scenario[i]["leg_order"]]
+    }
+    if orders:
+        out["leg_order"] = sorted(orders)
     return out
 
 

@@ -16,6 +16,7 @@ from symbench.core.common.errors import SymbenchError
 from symbench.core.data.schema import VARIANTS
 from symbench.core.data.standard import standard_hash
 from symbench.core.plugin import registry
+from symbench.core.robot.specs import registered_robot
 from symbench.core.runs.results import ResultRecord, read_record
 
 COMMIT = re.compile(r"^[0-9a-f]{40}$")
@@ -89,7 +90,7 @@ def _commit_problem(record: ResultRecord) -> str:
 def _name_problem(record: ResultRecord) -> str:
     """Every name must be registered here, and the model's view and variant its own."""
     try:
-        registry.robot(record.robot)
+        registered_robot(record.robot)
         registry.split(record.split)
         entry = registry.model(record.model.name, record.model.backend)
         for evaluator in record.metrics:

@@ -12,7 +12,19 @@ from symbench.core.common.errors import SymbenchError
 from symbench.core.data.dataset import Dataset
 from symbench.core.plugin.registry import collect
 
-SCENARIO_COLUMNS = ("inclination_deg", "heading_deg", "yaw_deg", "direction")
+SCENARIO_COLUMNS = ("inclination_deg", "heading_deg", "yaw_deg", "direction", "leg_order")
+
+
+def _leg_order(scenario: dict[str, Any]) -> str | None:
+    """The stepping sequence as shown: `default`, `reversed` or the legs in order."""
+    if "leg_order" not in scenario:
+        return None
+    order = scenario["leg_order"]
+    if order is None:
+        return "default"
+    if list(order) == sorted(order, reverse=True):
+        return "reversed"
+    return ",".join(map(str, order))
 
 
 def scenario_values(ds: Dataset, ids: np.ndarray) -> dict[str, list[Any]]:
@@ -21,7 +33,8 @@ def scenario_values(ds: Dataset, ids: np.ndarray) -> dict[str, list[Any]]:
     by_id = dict(zip(ds.trajectory_ids.tolist(), ds.scenarios, strict=True))
     out: dict[str, list[Any]] = {}
     for column in SCENARIO_COLUMNS:
-        values = {by_id[i].get(column) for i in ids.tolist()} - {None}
+        read = _leg_order if column == "leg_order" else (lambda s, c=column: s.get(c))
+        values = {read(by_id[i]) for i in ids.tolist()} - {None}
         if values:
             out[column] = sorted(values, key=lambda v: (isinstance(v, str), v))
     return out

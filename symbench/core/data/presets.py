@@ -190,6 +190,20 @@ _SMALL_GRID = ScenarioGrid(
     seconds=2.6,
 )
 
+# Transfer: every slope from the floor (0) to the ceiling (180 degrees) and both leg orders,
+# so that `unseen-inclination` (train up to the wall, test on overhangs and the ceiling) and
+# `unseen-gait` (train on one stepping sequence, test on the reversed one) hold out a band of
+# slopes or a gait; smoke's three yaws (two orbits on every robot) keep it small.
+_TRANSFER_GRID = ScenarioGrid(
+    inclinations_deg=(0.0, 30.0, 60.0, 90.0, 120.0, 150.0, 180.0),
+    headings_deg=(0.0,),
+    yaws_per_turn=0,
+    directions=("forward", "left"),
+    leg_orders=LEG_ORDERS,
+    seeds=(0,),
+    seconds=2.6,
+)
+
 SMOKE = Preset(
     "smoke",
     "a few one-second trajectories, for tests (seconds)",
@@ -206,6 +220,16 @@ SMALL = Preset(
     Training(max_steps=10000, eval_every=500, patience=6, max_epochs=60),
     _EVALUATION,
     ClosedLoop(2.6, 6, _PD_FRACTIONS, 0.1, train_preset="small-noisy"),
+    _FRACTIONS,
+)
+TRANSFER = Preset(
+    "transfer",
+    "every slope from floor to ceiling and both leg orders: the unseen-inclination and "
+    "unseen-gait splits",
+    _TRANSFER_GRID,
+    SMALL.training,
+    _EVALUATION,
+    ClosedLoop(2.6, 6, _PD_FRACTIONS, 0.1),
     _FRACTIONS,
 )
 PAPER = Preset(
@@ -243,6 +267,7 @@ PRESETS: dict[str, Preset] = {
     for p in (
         SMOKE,
         SMALL,
+        TRANSFER,
         PAPER,
         _noisy(SMOKE, "smoke's grid with torque noise on the expert's execution, for tests"),
         _noisy(SMALL, "small's grid with torque noise on the expert's execution: data for control"),
@@ -264,9 +289,10 @@ def dataset_id(robot: str, preset_name: str) -> str:
 
 def parse_dataset_id(dataset_id_: str) -> tuple[str, str] | None:
     """(robot, preset) of a generated dataset id, or None for other ids (imports); a
-    preset's name may hold dashes (hexa-climb-small-noisy-v5)."""
-    parts = dataset_id_.split("-")
-    name = "-".join(parts[2:-1])
-    if len(parts) >= 4 and parts[1] == "climb" and name in PRESETS and parts[-1].startswith("v"):
-        return parts[0], name
+    preset's name may hold dashes (hexa-climb-small-noisy-v5), and so may a robot's
+    (hexa-asym-0.05-climb-small-v5)."""
+    robot, climb, rest = dataset_id_.partition("-climb-")
+    name, dash, version = rest.rpartition("-")
+    if robot and climb and dash and name in PRESETS and version.startswith("v"):
+        return robot, name
     return None

@@ -5,12 +5,19 @@ and symmetry; the MJCF (symbench.core.sim.model) and the leg frames used by the 
 both derived from it, so they cannot disagree. Legs are numbered counter-clockwise seen from
 above; leg frame i sits at the coxa joint in the zero configuration, z along the base z, x
 along the coxa's zero direction.
+
+Approximately symmetric variants: `<robot>-asym-<A>` (e.g. `hexa-asym-0.05`) is `<robot>`
+with leg 0's links and ankle (1 + A) times as heavy, masses and inertias alike, a single
+parameter that breaks the symmetry the robot still declares (an `[asymmetry]` table with
+`leg0_heavier = A` in a robot.toml does the same). Its data is only approximately
+symmetric; `symbench data symmetry` measures how far.
 """
 
 from __future__ import annotations
 
 import hashlib
 import json
+import re
 import tomllib
 from dataclasses import dataclass
 from functools import cached_property
@@ -97,6 +104,7 @@ class RobotSpec:
     symmetry_shift: int
     symmetry_mirror_offset: int
     canonical: str  # canonical JSON of the parsed toml, the source of spec_hash
+    asymmetry: float = 0.0  # leg 0 is (1 + asymmetry) times as heavy (0: symmetric)
 
     @cached_property
     def group(self) -> LegGroup:
@@ -147,10 +155,14 @@ class RobotSpec:
     def spec_hash(self) -> str:
         return hashlib.sha256(self.canonical.encode()).hexdigest()
 
+    def leg_mass_scale(self, i: int) -> float:
+        """How many times the spec's leg masses and inertias leg `i` carries."""
+        return 1.0 + self.asymmetry if i == 0 else 1.0
+
     @property
     def total_mass(self) -> float:
         per_leg = sum(self.leg.masses.values()) + sum(self.leg.ankle_masses)
-        return self.base_mass + self.n_legs * per_leg
+        return self.base_mass + per_leg * sum(map(self.leg_mass_scale, range(self.n_legs)))
 
 
 def _get(table: dict, key: str, where: str) -> Any:
@@ -290,6 +302,7 @@ def parse_spec(raw: dict, source: str = "robot.toml") -> RobotSpec:
         symmetry_shift=int(sym.get("shift", 1)),
         symmetry_mirror_offset=int(sym.get("mirror_offset", 0)),
         canonical=json.dumps(raw, sort_keys=True, separators=(",", ":")),
+        asymmetry=_asymmetry(raw.get("asymmetry", {}), source),
     )
     group = from_spec(n_legs, spec.symmetry_kind, spec.symmetry_shift, spec.symmetry_mirror_offset)
     unwrapped = np.unwrap(np.radians(spec.mount_angles_deg))
@@ -319,23 +332,54 @@ def parse_spec(raw: dict, source: str = "robot.toml") -> RobotSpec:
     return spec
 
 
-def load_spec(spec_dir: Path) -> RobotSpec:
-    """The spec in `spec_dir/robot.toml`."""
+def _asymmetry(table: Any, source: str) -> float:
+    """The optional `[asymmetry]` table's `leg0_heavier` (0 without one)."""
+    where = f"{source} [asymmetry]"
+    if not isinstance(table, dict) or set(table) - {"leg0_heavier"}:
+        raise SymbenchError(f"{where}: the only key is leg0_heavier, got {table}")
+    return _non_negative(table.get("leg0_heavier", 0.0), where + " leg0_heavier")
+
+
+def _read_toml(spec_dir: Path) -> tuple[dict, Path]:
     path = Path(spec_dir) / "robot.toml"
     if not path.is_file():
         raise SymbenchError(f"robot spec {path} does not exist")
     try:
-        raw = tomllib.loads(path.read_text())
+        return tomllib.loads(path.read_text()), path
     except tomllib.TOMLDecodeError as exc:
         raise SymbenchError(f"{path}: not valid TOML ({exc})") from None
+
+
+def load_spec(spec_dir: Path) -> RobotSpec:
+    """The spec in `spec_dir/robot.toml`."""
+    raw, path = _read_toml(spec_dir)
     return parse_spec(raw, str(path))
 
 
-def load_robot(name: str) -> RobotSpec:
-    """The registered robot `name` (through the symbench_robots hook)."""
+VARIANT = re.compile(r"(?P<robot>.+)-asym-(?P<asymmetry>\d+(\.\d+)?)")
+
+
+def registered_robot(name: str) -> tuple[str, float]:
+    """(the registered robot, the asymmetry) that `name` is: `hexa` -> ("hexa", 0.0),
+    `hexa-asym-0.05` -> ("hexa", 0.05); an unknown robot is refused, naming the known ones."""
     from symbench.core.plugin import registry
 
-    spec = load_spec(registry.robot(name).spec_dir)
+    match = VARIANT.fullmatch(name)
+    base, asymmetry = (match["robot"], float(match["asymmetry"])) if match else (name, 0.0)
+    registry.robot(base)
+    return base, asymmetry
+
+
+def load_robot(name: str) -> RobotSpec:
+    """The registered robot `name` (through the symbench_robots hook), or an approximately
+    symmetric variant of one (`<robot>-asym-<A>`)."""
+    from symbench.core.plugin import registry
+
+    base, asymmetry = registered_robot(name)
+    raw, path = _read_toml(registry.robot(base).spec_dir)
+    if asymmetry:
+        raw = {**raw, "name": name, "asymmetry": {"leg0_heavier": asymmetry}}
+    spec = parse_spec(raw, str(path))
     if spec.name != name:
         raise SymbenchError(f"robot '{name}' points at a spec named '{spec.name}'")
     return spec

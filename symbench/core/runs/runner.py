@@ -37,6 +37,7 @@ from symbench.core.data.schema import VARIANTS
 from symbench.core.data.splits import check_split
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import ModelEntry
+from symbench.core.robot.specs import registered_robot
 from symbench.core.runs.evaluation import EvaluationContext, TrainedOnSplit, run_evaluators
 from symbench.core.runs.results import (
     IDENTIFIER,
@@ -148,7 +149,7 @@ def check_names(spec: RunSpec) -> None:
             f"model {entry.name} has no build keyword {', '.join(unknown)} (it has: "
             f"{', '.join(build_hyperparameters(entry, {})) or 'none'})"
         )
-    registry.robot(spec.robot)
+    registered_robot(spec.robot)
     check_split(spec.split)  # a registered split, or a column split's name
     for name in spec.evaluators:
         registry.evaluator(name)

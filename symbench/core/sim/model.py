@@ -142,18 +142,22 @@ def _add_leg(spec_mj, base, spec: RobotSpec, i: int) -> None:
     leg = spec.leg
     lo, hi = leg.joint_lower, leg.joint_upper
     origin, rot = spec.leg_origins()[i], spec.leg_rotations()[i]
+    scale = spec.leg_mass_scale(i)  # 1 but for an asymmetric variant's leg 0
     parent, pos, quat = base, origin, tuple(mat_to_quat(rot))
     for k, joint in enumerate(JOINT_NAMES):
         length = leg.lengths[joint]
         body = parent.add_body(name=f"leg{i}_{joint}", pos=list(pos), quat=list(quat))
-        _inertial(body, leg.masses[joint], leg.inertias[joint], (length / 2, 0.0, 0.0))
+        inertia = tuple(scale * v for v in leg.inertias[joint])
+        _inertial(body, scale * leg.masses[joint], inertia, (length / 2, 0.0, 0.0))
         _hinge(body, joint_name(i, joint), JOINT_AXES[k], lo[k], hi[k], leg.joint_damping)
         _visual_capsule(body, length, 0.012)
         parent, pos, quat = body, (length, 0.0, 0.0), (1.0, 0.0, 0.0, 0.0)
     for k in range(3):  # passive gimbal; its last link is the foot with the magnet
         name = foot_name(i) if k == 2 else f"leg{i}_ankle{k}"
         body = parent.add_body(name=name, pos=list(pos), quat=list(quat))
-        _inertial(body, leg.ankle_masses[k], leg.ankle_inertias[k])
+        _inertial(
+            body, scale * leg.ankle_masses[k], tuple(scale * v for v in leg.ankle_inertias[k])
+        )
         _hinge(
             body,
             f"leg{i}_ankle{k}",

@@ -1,5 +1,5 @@
-"""Built-in splits: iid, unseen-heading, unseen-rotation, orbit-rotation and fraction-F
-(sample efficiency).
+"""Built-in splits: iid, unseen-heading, unseen-rotation, orbit-rotation, unseen-inclination,
+unseen-gait and fraction-F (sample efficiency).
 
 Registered through the `symbench_splits` hook exactly as a third-party split would be.
 The fraction-F splits are those of the presets' sample-efficiency curves.
@@ -29,12 +29,23 @@ def symbench_splits() -> list[SplitEntry]:
             "unseen-rotation",
             splits.unseen_rotation,
             "train on every other yaw of one sector, test on yaws between them in the other "
-            "sectors (generalization across rotations)",
+            "sectors (rotations never seen)",
         ),
         SplitEntry(
             "orbit-rotation",
             splits.orbit_rotation,
             "train on the yaws of one sector, test on their rotated images (pure equivariance)",
+        ),
+        SplitEntry(
+            "unseen-inclination",
+            splits.unseen_inclination,
+            "train on the gentler slopes, test on the steepest third (transfer preset: floor "
+            "to wall trains, overhangs and ceiling test)",
+        ),
+        SplitEntry(
+            "unseen-gait",
+            splits.unseen_gait,
+            "train on the default stepping sequence, test on the reversed one",
         ),
     ]
     entries += [

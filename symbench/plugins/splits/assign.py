@@ -88,6 +88,42 @@ def unseen_rotation(context: SplitContext) -> np.ndarray:
     return carve_validation(labels, context)
 
 
+def unseen_inclination(context: SplitContext) -> np.ndarray:
+    """Train on the gentler slopes, test on the steepest third of the dataset's inclinations
+    (at least one): on the `transfer` grid, floor to wall trains, overhangs and the ceiling
+    test. Every test slope lies beyond every training slope, so the model extrapolates."""
+    inclinations = np.round(context.values("inclination_deg").astype(float), 6)
+    unique = np.unique(inclinations)
+    if len(unique) < 2:
+        raise SymbenchError(
+            f"dataset {context.dataset_id}: unseen-inclination needs at least 2 "
+            f"inclinations, found {unique.tolist()}"
+        )
+    held_out = unique[len(unique) - math.ceil(len(unique) / 3) :]
+    labels = np.where(np.isin(inclinations, held_out), "test", "train").astype(object)
+    return carve_validation(labels, context)
+
+
+def unseen_gait(context: SplitContext) -> np.ndarray:
+    """Train on the default leg order (the stepping sequence), test on every other one.
+
+    No rotation of the robot turns one stepping sequence into the reversed one, so no test
+    climb is a rotated image of a training climb; a mirror does reverse it, so a model
+    equivariant to the robot's mirrors may meet mirrored images of its training climbs."""
+    if any("leg_order" not in s for s in context.scenarios):
+        raise SymbenchError(
+            f"dataset {context.dataset_id}: some trajectories have no 'leg_order', "
+            "which unseen-gait needs"
+        )
+    default = np.array([s["leg_order"] is None for s in context.scenarios])
+    if default.all() or not default.any():
+        raise SymbenchError(
+            f"dataset {context.dataset_id}: unseen-gait needs climbs with the default leg "
+            "order and climbs with another one"
+        )
+    return carve_validation(np.where(default, "train", "test").astype(object), context)
+
+
 def fraction(share: float) -> Callable[[SplitContext], np.ndarray]:
     """The iid split with only a seeded `share` of its training trajectories kept.
 
