@@ -13,7 +13,8 @@ Building models
 Writing evaluators
     EvaluationContext, TrainedOnSplit, rmse, relative_error, act_on_raw,
     rotate_scene_about_gravity, rotate_scene, Scenario, simulate, track, build_view,
-    sample_efficiency_png, held_out_scenarios, reference_scenarios, oracle_policy
+    sample_efficiency_png, held_out_scenarios, reference_scenarios, oracle_policy,
+    dataset_symmetry
 Writing splits
     SplitContext, carve_validation
 Reading a preset's sizes, budgets and horizons (`symbench presets`)
@@ -68,6 +69,7 @@ _PUBLIC: dict[str, str] = {
     "reference_scenarios": "symbench.core.sim.references:reference_scenarios",
     "oracle_policy": "symbench.core.sim.references:oracle_policy",
     "build_view": "symbench.core.data.views:build_view",
+    "dataset_symmetry": "symbench.core.data.symmetry_report:dataset_symmetry",
     "sample_efficiency_png": "symbench.core.board.plots:sample_efficiency_png",
     "SplitContext": "symbench.core.data.splits:SplitContext",
     "carve_validation": "symbench.core.data.splits:carve_validation",
@@ -107,6 +109,7 @@ __all__ = [
     "act_on_raw",
     "build_view",
     "carve_validation",
+    "dataset_symmetry",
     "held_out_scenarios",
     "hookimpl",
     "load_robot",

@@ -114,3 +114,35 @@ def test_output_names_cannot_leave_the_output_folder(tmp_path, make_record, as_s
         "a/records/r1.json",
         "a/records/r2.json",
     ]
+
+
+def test_asymmetric_variants_are_plotted_against_their_asymmetry(
+    tmp_path, make_record, monkeypatch
+):
+    """hexa and its variants hexa-asym-A: each model's RMSE per A, with the datasets' own
+    torque asymmetry (data-symmetry evaluator) beside it; a robot without variants gets no
+    such plot, and a split run on the symmetric robot only is left out of it."""
+    runs = []
+    for robot, asym, data in (("hexa", 0.0, 1e-13), ("hexa-asym-0.1", 0.1, 0.05)):
+        for model, rmse in (("sdnn", 0.01), ("ffnn", 0.1)):
+            for seed in range(3):
+                record = make_record(robot=robot, model=model, seed=seed, rmse=rmse + asym)
+                record["metrics"]["data-symmetry"] = {"tau_rel_error": data}
+                runs.append(record)
+    runs += [make_record(split="unseen-heading", seed=s) for s in range(3)]
+    runs += [make_record(robot="nona", seed=s) for s in range(3)]
+    for i, record in enumerate(runs):
+        write_record(record, tmp_path / "records" / f"r{i}.json")
+    plotted = {}
+    monkeypatch.setattr(
+        "symbench.core.board.leaderboard.asymmetry_png",
+        lambda curves, data, title, path: plotted.update(curves=curves, data=data, path=path),
+    )
+    names = sorted(p.name for p in write_leaderboard(tmp_path / "records", tmp_path / "out"))
+    assert "hexa-asymmetry.png" in names and "nona-asymmetry.png" not in names
+    assert plotted["path"].name == "hexa-asymmetry.png"
+    curves = plotted["curves"]
+    assert sorted(curves) == ["ffnn (acc, torch), iid", "sdnn (acc, torch), iid"]
+    x, mean, std = curves["sdnn (acc, torch), iid"]
+    assert x == [0.0, 0.1] and mean == pytest.approx([0.01, 0.11]) and std == [0.0, 0.0]
+    assert plotted["data"][:2] == ([0.0, 0.1], pytest.approx([1e-13, 0.05]))

@@ -24,10 +24,11 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from symbench.core.board.plots import sample_efficiency_png
+from symbench.core.board.plots import asymmetry_png, sample_efficiency_png
 from symbench.core.board.summary import headline
 from symbench.core.common.atomic import write_text_atomic
 from symbench.core.common.errors import SymbenchError
+from symbench.core.robot.specs import VARIANT
 from symbench.core.runs.results import RecordV1, read_display_record
 
 MIN_SEEDS = 3
@@ -43,6 +44,8 @@ COLUMNS = {
     ("closed-loop", "pd_time_to_failure_s"): "cl_held_s",
     ("closed-loop", "pd_joint_rmse_rad"): "cl_rmse_rad",
     ("closed-loop", "pd_normalized_score"): "cl_score",
+    # the dataset's own torque asymmetry (data-symmetry evaluator): the same for every model
+    ("data-symmetry", "tau_rel_error"): "data_tau_asym",
 }
 
 
@@ -237,6 +240,45 @@ def sample_efficiency_plot(table: pd.DataFrame, robot: str, path: Path) -> bool:
     return True
 
 
+def base_and_asymmetry(robot: str) -> tuple[str, float]:
+    """('hexa', 0.05) for 'hexa-asym-0.05', ('hexa', 0.0) for 'hexa' (names only: a record's
+    robot may be a plugin's that is not installed here)."""
+    match = VARIANT.fullmatch(robot)
+    return (match["robot"], float(match["asymmetry"])) if match else (robot, 0.0)
+
+
+def asymmetry_plot(table: pd.DataFrame, base: str, path: Path) -> bool:
+    """Test RMSE against the asymmetry of `base`'s variants (`base-asym-A`, `base` itself at
+    0), one line per split and model, with the datasets' own torque asymmetry beside it;
+    False when `base` has no variant records. Each preset and protocol is its own line."""
+    rows = table.copy()
+    rows[["base", "asymmetry"]] = [base_and_asymmetry(r) for r in rows.robot]
+    rows = rows[rows.base == base]
+    if not (rows.asymmetry > 0).any():
+        return False
+    several = rows.preset.nunique() > 1 or rows.protocol.nunique() > 1
+    curves = {}
+    for (split, model, variant, backend, preset, protocol), part in rows.groupby(
+        ["split", "model", "variant", "backend", "preset", "protocol"], sort=True
+    ):
+        if not (part.asymmetry > 0).any():
+            continue  # a split or model run on the symmetric robot only
+        part = part.sort_values("asymmetry")
+        on = f", {preset}, {protocol}" if several else ""
+        curves[f"{model} ({variant}, {backend}), {split}{on}"] = (
+            part.asymmetry.tolist(),
+            part.rmse_Nm_mean.tolist(),
+            part.rmse_Nm_std.fillna(0).tolist(),
+        )
+    data = None
+    if "data_tau_asym_mean" in rows:
+        measured = rows.dropna(subset=["data_tau_asym_mean"]).groupby("asymmetry")
+        per_dataset = measured.data_tau_asym_mean.first()
+        data = (per_dataset.index.tolist(), per_dataset.tolist(), None)
+    asymmetry_png(curves, data, f"{base}: error against asymmetry", path)
+    return True
+
+
 def write_leaderboard(results: Path, out: Path) -> list[Path]:
     """Aggregate the records under `results` into tables and plots under `out`."""
     table = aggregate(load_records(results))
@@ -253,5 +295,9 @@ def write_leaderboard(results: Path, out: Path) -> list[Path]:
         written.append(md)
         png = out / f"{robot}-sample-efficiency.png"
         if sample_efficiency_plot(table, robot, png):
+            written.append(png)
+    for base in sorted({base_and_asymmetry(r)[0] for r in table.robot.unique()}):
+        png = out / f"{base}-asymmetry.png"
+        if asymmetry_plot(table, base, png):
             written.append(png)
     return written

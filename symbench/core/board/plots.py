@@ -70,3 +70,28 @@ def grouped_bars_png(
     ax.legend(fontsize=7)
     fig.tight_layout()
     _write_png(fig, path)
+
+
+def asymmetry_png(
+    curves: Mapping[str, Curve], data_asymmetry: Curve | None, title: str, path: Path
+) -> None:
+    """Test RMSE against a robot variant's asymmetry, one line per label, and beside it the
+    datasets' own torque asymmetry (relative error between rotated image climbs), both on
+    log scales; written atomically."""
+    fig, (left, right) = _pyplot().subplots(1, 2, figsize=(9, 3.5), dpi=120)
+    for label, (x, mean, std) in curves.items():
+        left.errorbar(x, mean, yerr=std, marker="o", capsize=3, label=label)
+    left.set(xlabel="asymmetry A (leg 0 1 + A times as heavy)", ylabel="test torque RMSE (N m)")
+    left.set(title=title, yscale="log")
+    left.legend(fontsize=7)
+    if data_asymmetry is not None:
+        x, mean, _ = data_asymmetry
+        right.plot(x, mean, marker="s", color="black")
+    right.set(
+        xlabel="asymmetry A",
+        ylabel="dataset torque asymmetry (relative)",
+        title="the data's own symmetry",
+        yscale="log",
+    )
+    fig.tight_layout()
+    _write_png(fig, path)

@@ -27,6 +27,12 @@ CONTENT_HASHES = {
     "magneto-climb-small-v5": "23de52021a59354a534947859631b26e3e5a7632b64e87d05139a8c0a624a194",
     "hexa-climb-small-v5": "a84d3a43f4f743b611cc276661af24c9d424a02d7b68380b5cebf7a2daee86a7",
     "nona-climb-small-v5": "69919b9be1dc8b22128d1ec4f06e6ab6c5e555f742b25d9e040310b236fb540d",
+    # every slope from floor to ceiling, both leg orders: unseen-inclination, unseen-gait
+    "magneto-climb-transfer-v5": (
+        "534054b1928a5c12a3933717e422741b7751aec05481a31624ae8367a8cb4b5e"
+    ),
+    "hexa-climb-transfer-v5": ("16a2dc368ea5f075780fbde86ff8f6fbab20503090b95d6f587aa552d8940729"),
+    "nona-climb-transfer-v5": ("9b61fdbe495d88707a1f5996baae3606ffa65fe7a70943c947a3dba76850cda1"),
     # data for control: the grids with torque noise (its draws seeded by each scenario)
     "magneto-climb-smoke-noisy-v5": (
         "6af979c0464e9a0f38e2ff4f32b5851fe3c295d20f683175e112fe604636e196"

@@ -315,7 +315,8 @@ def verdict(relative_error: float, relative_floor: float) -> str:
 
 
 def dataset_symmetry(dataset: Any) -> SymmetryReport:
-    """The symmetry report of a loaded `Dataset` (its robot's group and leg frames)."""
+    """The symmetry report of `dataset`, a loaded `Dataset` (its robot's group and leg
+    frames): what `symbench data symmetry` prints."""
     from symbench.core.data.storage import read_trajectory
 
     spec = dataset.spec

@@ -6,6 +6,7 @@ import symbench
 from symbench import EvaluatorEntry
 from symbench.plugins.evaluators import (
     closed_loop,
+    data_symmetry,
     equivariance,
     generalization,
     invariance,
@@ -13,7 +14,15 @@ from symbench.plugins.evaluators import (
     torque_error,
 )
 
-MODULES = (torque_error, equivariance, invariance, generalization, sample_efficiency, closed_loop)
+MODULES = (
+    torque_error,
+    equivariance,
+    invariance,
+    generalization,
+    sample_efficiency,
+    closed_loop,
+    data_symmetry,
+)
 # What each needs from the dataset beyond its test samples (symbench.EVALUATOR_NEEDS); a run
 # on a dataset without it skips the evaluator with the reason. The closed-loop evaluator
 # simulates the held-out scenarios and drives the robot with the `next` variant.
@@ -24,6 +33,7 @@ NEEDS: dict[str, tuple[str, ...]] = {
     generalization.NAME: (),  # trains on the standard splits it can, names the others
     sample_efficiency.NAME: (),
     closed_loop.NAME: ("simulator", "variant:next"),
+    data_symmetry.NAME: ("raw", "scenarios"),  # pairs climbs by their scenarios
 }
 
 
