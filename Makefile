@@ -7,9 +7,11 @@ export MUJOCO_GL ?= disable
 
 .PHONY: run test test-slow check bench clean
 
-$(STAMP): pyproject.toml constraints.txt examples/symbench-example-plugin/pyproject.toml
+$(STAMP): pyproject.toml constraints.txt examples/symbench-example-plugin/pyproject.toml \
+		examples/symbench-e2cnn/pyproject.toml
 	test -x $(VENV)/bin/python || $(PYTHON) -m venv $(VENV)
-	$(VENV)/bin/python -m pip install --quiet -c constraints.txt -e '.[test]' -e examples/symbench-example-plugin
+	$(VENV)/bin/python -m pip install --quiet -c constraints.txt -e '.[test]' -e examples/symbench-example-plugin \
+		-e examples/symbench-e2cnn
 	touch $(STAMP)
 
 run: $(STAMP)

@@ -337,7 +337,8 @@ def test_refuses_to_start_with_an_unknown_plugin_in_symbench_plugins(
     assert exit_.value.code == 1
     assert capsys.readouterr().err.strip() == (
         "error: SYMBENCH_PLUGINS: unknown plugin 'exmple_models'; did you mean example_models, "
-        "jax_models, torch_models? "
-        "(known: evaluators, example_models, jax_models, robots, splits, torch_models)"
+        "jax_models, e2cnn_models? "
+        "(known: e2cnn_models, evaluators, example_models, jax_models, robots, splits, "
+        "torch_models)"
     )
     assert snapshot(site.parent) == before
