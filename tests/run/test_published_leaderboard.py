@@ -28,13 +28,18 @@ def _made_files(folder: Path) -> dict[str, bytes]:
     }
 
 
-ABLATIONS = BOARD / "ablations"
+# boards of their own beside the main one: ablations and studies, each with its records/
+SIDE_BOARDS = sorted(
+    folder
+    for kind in ("ablations", "studies")
+    if (BOARD / kind).is_dir()
+    for folder in (BOARD / kind).iterdir()
+    if (folder / "records").is_dir()
+)
 
 
 @pytest.mark.parametrize(
-    "board",
-    [BOARD, ABLATIONS / "sdnn-ring", ABLATIONS / "sdnn-matched-size"],
-    ids=["main", "ring", "matched-size"],
+    "board", [BOARD, *SIDE_BOARDS], ids=["main", *(f.name for f in SIDE_BOARDS)]
 )
 def test_committed_tables_regenerate_identically(board, tmp_path):
     result = CliRunner().invoke(

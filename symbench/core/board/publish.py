@@ -28,7 +28,7 @@ from symbench.core.common.errors import SymbenchError
 from symbench.core.runs.results import ResultRecord, write_record
 
 RECORDS = "records"
-PUBLISHED_PRESETS = ("small", "paper")
+PUBLISHED_PRESETS = ("small", "transfer", "paper")
 
 
 def _group(r: ResultRecord) -> tuple[str, ...]:

@@ -33,6 +33,16 @@ CONTENT_HASHES = {
     ),
     "hexa-climb-transfer-v5": ("16a2dc368ea5f075780fbde86ff8f6fbab20503090b95d6f587aa552d8940729"),
     "nona-climb-transfer-v5": ("9b61fdbe495d88707a1f5996baae3606ffa65fe7a70943c947a3dba76850cda1"),
+    # hexa with leg 0 heavier by A (approximately symmetric variants, issue 22)
+    "hexa-asym-0.05-climb-small-v5": (
+        "7e4e37cef42c7d2fec61cb0f2a1fe0d36e7ff31420e55a7be4fa1b0631d66b40"
+    ),
+    "hexa-asym-0.1-climb-small-v5": (
+        "e7085dfc3a5c577c591006659f9a4440d168452cb7859f2428bd6cc49dac4dce"
+    ),
+    "hexa-asym-0.2-climb-small-v5": (
+        "13e6ca318e06fbc59da8f4c0ae33fdac93780f7dc9b23396c04d99b04e41d615"
+    ),
     # data for control: the grids with torque noise (its draws seeded by each scenario)
     "magneto-climb-smoke-noisy-v5": (
         "6af979c0464e9a0f38e2ff4f32b5851fe3c295d20f683175e112fe604636e196"
