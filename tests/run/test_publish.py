@@ -142,7 +142,10 @@ def test_refuses_a_cached_dataset_that_differs_from_the_committed_reference(
 
 
 def test_refuses_smoke_records(site, valid):
-    message = f"{valid[0]}: smoke-preset records are not published (this board takes small, transfer, paper)"
+    message = (
+        f"{valid[0]}: smoke-preset records are not published "
+        "(this board takes small, transfer, paper)"
+    )
     assert_refused(site, valid, message, presets=publishing.PUBLISHED_PRESETS)
     before = snapshot(site)
     result = CliRunner().invoke(
