@@ -102,17 +102,17 @@ def test_parts_are_disjoint_deterministic_and_select_whole_trajectories(
     _check_parts(data, name)
 
 
-def _check_parts(hexa_small, name):
-    parts = hexa_small.split_indices(name, seed=3)
+def _check_parts(data, name):
+    parts = data.split_indices(name, seed=3)
     ids = np.concatenate([parts.train, parts.val, parts.test])
     assert len(np.unique(ids)) == len(ids)
     assert min(len(parts.train), len(parts.val), len(parts.test)) >= 1
-    again = hexa_small.split_indices(name, seed=3)
+    again = data.split_indices(name, seed=3)
     assert again.to_dict() == parts.to_dict()
-    train, val, test = hexa_small.split_views("leg_grouped", "acc", name, seed=3)
+    train, val, test = data.split_views("leg_grouped", "acc", name, seed=3)
     assert set(np.unique(train.trajectory)) == set(parts.train.tolist())
     assert set(np.unique(test.trajectory)) == set(parts.test.tolist())
-    per_traj = dict(zip(hexa_small.trajectory_ids.tolist(), hexa_small.n_samples.tolist()))
+    per_traj = dict(zip(data.trajectory_ids.tolist(), data.n_samples.tolist()))
     assert len(val) == sum(per_traj[i] for i in parts.val.tolist())  # whole trajectories
 
 

@@ -28,7 +28,7 @@ from symbench.core.board.plots import asymmetry_png, sample_efficiency_png
 from symbench.core.board.summary import headline
 from symbench.core.common.atomic import write_text_atomic
 from symbench.core.common.errors import SymbenchError
-from symbench.core.robot.specs import VARIANT
+from symbench.core.robot.specs import split_variant
 from symbench.core.runs.results import RecordV1, read_display_record
 
 MIN_SEEDS = 3
@@ -240,19 +240,12 @@ def sample_efficiency_plot(table: pd.DataFrame, robot: str, path: Path) -> bool:
     return True
 
 
-def base_and_asymmetry(robot: str) -> tuple[str, float]:
-    """('hexa', 0.05) for 'hexa-asym-0.05', ('hexa', 0.0) for 'hexa' (names only: a record's
-    robot may be a plugin's that is not installed here)."""
-    match = VARIANT.fullmatch(robot)
-    return (match["robot"], float(match["asymmetry"])) if match else (robot, 0.0)
-
-
 def asymmetry_plot(table: pd.DataFrame, base: str, path: Path) -> bool:
     """Test RMSE against the asymmetry of `base`'s variants (`base-asym-A`, `base` itself at
     0), one line per split and model, with the datasets' own torque asymmetry beside it;
     False when `base` has no variant records. Each preset and protocol is its own line."""
     rows = table.copy()
-    rows[["base", "asymmetry"]] = [base_and_asymmetry(r) for r in rows.robot]
+    rows[["base", "asymmetry"]] = [split_variant(r) for r in rows.robot]
     rows = rows[rows.base == base]
     if not (rows.asymmetry > 0).any():
         return False
@@ -296,7 +289,7 @@ def write_leaderboard(results: Path, out: Path) -> list[Path]:
         png = out / f"{robot}-sample-efficiency.png"
         if sample_efficiency_plot(table, robot, png):
             written.append(png)
-    for base in sorted({base_and_asymmetry(r)[0] for r in table.robot.unique()}):
+    for base in sorted({split_variant(r)[0] for r in table.robot.unique()}):
         png = out / f"{base}-asymmetry.png"
         if asymmetry_plot(table, base, png):
             written.append(png)

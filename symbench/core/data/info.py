@@ -15,11 +15,12 @@ from symbench.core.plugin.registry import collect
 SCENARIO_COLUMNS = ("inclination_deg", "heading_deg", "yaw_deg", "direction", "leg_order")
 
 
-def _leg_order(scenario: dict[str, Any]) -> str | None:
-    """The stepping sequence as shown: `default`, `reversed` or the legs in order."""
-    if "leg_order" not in scenario:
-        return None
-    order = scenario["leg_order"]
+def _shown(scenario: dict[str, Any], column: str) -> Any:
+    """A scenario's value of `column` as shown (None: it has none); the stepping sequence as
+    `default`, `reversed` or the legs in order."""
+    if column != "leg_order" or column not in scenario:
+        return scenario.get(column)
+    order = scenario[column]
     if order is None:
         return "default"
     if list(order) == sorted(order, reverse=True):
@@ -33,8 +34,7 @@ def scenario_values(ds: Dataset, ids: np.ndarray) -> dict[str, list[Any]]:
     by_id = dict(zip(ds.trajectory_ids.tolist(), ds.scenarios, strict=True))
     out: dict[str, list[Any]] = {}
     for column in SCENARIO_COLUMNS:
-        read = _leg_order if column == "leg_order" else (lambda s, c=column: s.get(c))
-        values = {read(by_id[i]) for i in ids.tolist()} - {None}
+        values = {_shown(by_id[i], column) for i in ids.tolist()} - {None}
         if values:
             out[column] = sorted(values, key=lambda v: (isinstance(v, str), v))
     return out

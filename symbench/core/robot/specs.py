@@ -359,13 +359,20 @@ def load_spec(spec_dir: Path) -> RobotSpec:
 VARIANT = re.compile(r"(?P<robot>.+)-asym-(?P<asymmetry>\d+(\.\d+)?)")
 
 
+def split_variant(name: str) -> tuple[str, float]:
+    """(robot, asymmetry) named by `name`: `hexa` -> ("hexa", 0.0), `hexa-asym-0.05` ->
+    ("hexa", 0.05); the name only, nothing is looked up (a record may name a plugin's robot
+    that is not installed here)."""
+    match = VARIANT.fullmatch(name)
+    return (match["robot"], float(match["asymmetry"])) if match else (name, 0.0)
+
+
 def registered_robot(name: str) -> tuple[str, float]:
-    """(the registered robot, the asymmetry) that `name` is: `hexa` -> ("hexa", 0.0),
-    `hexa-asym-0.05` -> ("hexa", 0.05); an unknown robot is refused, naming the known ones."""
+    """`split_variant(name)`, refused (naming the known robots) unless its robot is
+    registered."""
     from symbench.core.plugin import registry
 
-    match = VARIANT.fullmatch(name)
-    base, asymmetry = (match["robot"], float(match["asymmetry"])) if match else (name, 0.0)
+    base, asymmetry = split_variant(name)
     registry.robot(base)
     return base, asymmetry
 
@@ -375,7 +382,7 @@ def load_robot(name: str) -> RobotSpec:
     symmetric variant of one (`<robot>-asym-<A>`)."""
     from symbench.core.plugin import registry
 
-    base, asymmetry = registered_robot(name)
+    base, asymmetry = split_variant(name)
     raw, path = _read_toml(registry.robot(base).spec_dir)
     if asymmetry:
         raw = {**raw, "name": name, "asymmetry": {"leg0_heavier": asymmetry}}
