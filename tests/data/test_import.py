@@ -139,10 +139,10 @@ def test_cli_import_info_and_export(smoke_hexa, home, tmp_path):
         f"content hash {again.content_hash}"
     )
     assert again.n_samples.sum() == info["samples"]
-    out = runner.invoke(cli, ["data", "info", "hexa-climb-paper-v5"])
+    out = runner.invoke(cli, ["data", "info", "hexa-climb-paper-v6"])
     assert error_line(out, 1) == (
-        f"Error: dataset 'hexa-climb-paper-v5' is not in the cache "
-        f"({home / 'datasets' / 'hexa-climb-paper-v5'}); generate it with: "
+        f"Error: dataset 'hexa-climb-paper-v6' is not in the cache "
+        f"({home / 'datasets' / 'hexa-climb-paper-v6'}); generate it with: "
         "symbench data generate --robot hexa --preset paper"
     )
     out = runner.invoke(cli, ["data", "info", smoke_hexa.dataset_id])

@@ -265,7 +265,7 @@ def test_sample_efficiency_trains_on_the_presets_fractions(monkeypatch, tmp_path
         return trained_on_split(split, variant)
 
     monkeypatch.setattr(sample_efficiency, "sample_efficiency_png", lambda *args: None)
-    dataset = SimpleNamespace(spec=SimpleNamespace(name="hexa"), id="hexa-climb-small-v5")
+    dataset = SimpleNamespace(spec=SimpleNamespace(name="hexa"), id="hexa-climb-small-v6")
     context = _context(PRESETS["small"], dataset, retrain=retrain)
     context.output_dir = tmp_path
     metrics = sample_efficiency.evaluate(context)
@@ -273,7 +273,7 @@ def test_sample_efficiency_trains_on_the_presets_fractions(monkeypatch, tmp_path
     e = context.entry  # the plot is named like the run's record: no run overwrites another's
     assert metrics["plot"] == str(
         tmp_path
-        / f"hexa-climb-small-v5__small__{e.name}__{e.variant}__{e.backend}__seed{context.seed}"
+        / f"hexa-climb-small-v6__small__{e.name}__{e.variant}__{e.backend}__seed{context.seed}"
         "-sample-efficiency.png"
     )
     assert list(curve) == ["0.1", "0.25", "0.5", "0.75", "1.0"]  # the published metric keys

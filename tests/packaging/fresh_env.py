@@ -71,7 +71,7 @@ class FreshEnv:
         code = "import sysconfig; print(sysconfig.get_path('purelib'))"
         self.site = Path(run([self.python, "-c", code], tmp).stdout.strip())
         # This environment's third-party packages, without symbench and its editable finders;
-        # addsitedir runs their .pth files (cmeel puts proxsuite on sys.path with one).
+        # addsitedir runs their .pth files (some packages put themselves on sys.path so).
         deps = tmp / "deps"
         deps.mkdir()
         for entry in Path(sysconfig.get_path("purelib")).iterdir():

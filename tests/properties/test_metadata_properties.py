@@ -23,7 +23,7 @@ from symbench.core.data.metadata import METADATA, content_hash
 from symbench.core.data.storage import step_count
 from symbench.core.plugin import registry
 
-DATASET = "hexa-climb-smoke-v5"
+DATASET = "hexa-climb-smoke-v6"
 
 
 @pytest.fixture(scope="module")

@@ -71,7 +71,7 @@ def test_replay_holds_over_a_small_preset_climb(robot):
 def test_the_reference_is_the_datasets_climb_every_physics_step(smoke_home):
     from symbench.core.data import load_dataset
 
-    dataset = load_dataset("hexa-climb-smoke-v5")
+    dataset = load_dataset("hexa-climb-smoke-v6")
     raw, ids = dataset.raw()
     fields = dataset.scenarios[0]
     reference = expert_reference(Scenario.from_dict(fields)).arrays
@@ -122,8 +122,8 @@ def test_closed_loop_evaluator_in_a_run(smoke_home, tmp_path):
     )
     metrics = record.metrics["closed-loop"]
     # trained on the noisy variant of the standard dataset (made when missing), saying so
-    assert metrics["trained_on"] == "hexa-climb-smoke-noisy-v5"
-    folders = list((tmp_path / "checkpoints").glob("*/*/hexa-climb-smoke-noisy-v5-*/iid__next"))
+    assert metrics["trained_on"] == "hexa-climb-smoke-noisy-v6"
+    folders = list((tmp_path / "checkpoints").glob("*/*/hexa-climb-smoke-noisy-v6-*/iid__next"))
     assert len(folders) == 1
     assert metrics["references"] >= 1 and metrics["horizon_s"] == 1.0  # the climb's length
     assert metrics["pd_fractions"] == [0.0, 0.1, 0.3, 1.0]

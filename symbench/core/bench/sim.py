@@ -33,10 +33,10 @@ def measure(
     climb = Climb.from_scenario(Scenario(robot, inclination_deg=inclination, seconds=seconds))
     last = {}
 
-    def keep(out, physics) -> None:
+    def keep(physics) -> None:
         last["physics"] = physics
 
-    rollout = run_climb(climb, seconds, on_step=keep, control_period=control_period)
+    rollout = run_climb(climb, seconds, on_finish=keep, control_period=control_period)
     physics = last["physics"]
     model, source = physics.model.ptr, physics.data.ptr
     dt = model.opt.timestep

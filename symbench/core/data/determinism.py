@@ -12,33 +12,33 @@ run time, and each kernel rounds differently in the last bit:
 - glibc's libm (used by MuJoCo, `math` and numpy's scalar paths), whose `sin`, `cos`, `exp`,
   `atan2`, `pow` ... have separate FMA and SSE2 builds chosen per CPU (measured: all of them
   round differently between the two);
-- proxsuite, whose AVX2 and AVX-512 builds even vary from call to call;
+- numba, which compiles the climbing loop for the host CPU (its features decide which
+  instructions LLVM may use);
 - pyarrow (Parquet writing), which dispatches SIMD code by CPU.
 The controller's feedback then grows last-bit differences into different files.
 
 The fix: dataset trajectories are simulated only in worker processes started with the
 environment below, which fixes every one of these to a kernel that every x86-64 CPU able to
-run this numpy (its baseline is x86-64-v2) executes identically; proxsuite is pinned to its
-portable build before it is imported. `require_pinned_numerics` checks, inside the worker,
-that each pin took effect, and generation refuses to simulate a standard dataset otherwise.
+run this numpy (its baseline is x86-64-v2) executes identically; numba compiles for the
+generic x86-64 CPU, and its code is IEEE arithmetic without fast-math (no reassociation, no
+FMA contraction). `require_pinned_numerics` checks, inside the worker, that each pin took
+effect, and generation refuses to simulate a standard dataset otherwise.
 Limits: identity holds for the same library versions (recorded in the dataset metadata and
 its hash) and the same glibc (its libm implementation differs between releases).
-MuJoCo has no CPU dispatch.
+MuJoCo and DAQP (the controller's QP solver) have no CPU dispatch.
 """
 
 from __future__ import annotations
 
 import os
-import sys
-import types
 from collections.abc import Iterator
 from contextlib import contextmanager
 
 from symbench.core.common.errors import SymbenchError
 
-PORTABLE = "proxsuite.proxsuite_pywrap"
 OPENBLAS_CORE = "Nehalem"  # SSE4.2, no FMA: part of numpy's x86-64-v2 baseline
 GLIBC_HWCAPS = "glibc.cpu.hwcaps=-AVX,-AVX2,-FMA,-FMA4,-AVX512F"  # libm's SSE2 builds
+NUMBA_CPU = "generic"  # numba's code for the baseline x86-64 CPU, whatever the host
 
 
 def _numpy_dispatch_targets() -> list[str]:
@@ -58,6 +58,7 @@ def pinned_environment() -> dict[str, str]:
         "NPY_DISABLE_CPU_FEATURES": " ".join(_numpy_dispatch_targets()),
         "GLIBC_TUNABLES": GLIBC_HWCAPS,
         "ARROW_USER_SIMD_LEVEL": "NONE",
+        "NUMBA_CPU_NAME": NUMBA_CPU,
     }
 
 
@@ -99,14 +100,16 @@ def numerics_problems() -> list[str]:
     for name in ("GLIBC_TUNABLES", "ARROW_USER_SIMD_LEVEL", "OPENBLAS_L2_SIZE"):
         if os.environ.get(name) != pins[name]:
             problems.append(f"{name} is {os.environ.get(name)!r} (set before the process started)")
-    if not portable_qp_in_process():
-        problems.append("proxsuite's SIMD build is loaded")
+    from numba import config
+
+    cpu = getattr(config, "CPU_NAME", None)
+    if cpu != NUMBA_CPU:
+        problems.append(f"numba compiles for {cpu or 'the host CPU'!r}, not {NUMBA_CPU}")
     return problems
 
 
 def require_pinned_numerics() -> None:
     """Refuse to simulate a standard dataset with CPU-dependent kernels."""
-    pin_portable_qp_build()
     problems = numerics_problems()
     if problems:
         raise SymbenchError(
@@ -115,21 +118,3 @@ def require_pinned_numerics() -> None:
             + "): standard datasets are simulated in "
             "worker processes that symbench.core.data.generation starts pinned"
         )
-
-
-def pin_portable_qp_build() -> None:
-    """Make the next `import proxsuite` load the portable build (no-op once imported)."""
-    if "proxsuite" in sys.modules:
-        return
-    stub = types.ModuleType("proxsuite.instructionset")
-    stub.has_AVX512F = stub.has_AVX2 = lambda: False  # type: ignore[attr-defined]
-    sys.modules["proxsuite.instructionset"] = stub
-
-
-def portable_qp_in_process() -> bool:
-    """Whether proxsuite is its portable build here (or not loaded yet)."""
-    loaded = sys.modules.get("proxsuite")
-    if loaded is None:
-        return True
-    sub = getattr(loaded, "_submodule", None)
-    return getattr(sub, "__name__", "") == PORTABLE

@@ -74,7 +74,7 @@ def default_simulator() -> Simulator:
 
 def _is_real_simulator(sim: Simulator) -> bool:
     """Only the real simulator needs pinned numerics (named, not imported, so that asking
-    does not load proxsuite); tests' stand-ins run anywhere."""
+    does not load the simulator); tests' stand-ins run anywhere."""
     return (
         f"{getattr(sim, '__module__', '')}.{getattr(sim, '__qualname__', '')}"
         == "symbench.core.sim.rollout.simulate"

@@ -31,7 +31,7 @@ from symbench.core.data.storage import (
 FORMAT = "symbench-dataset"
 FORMAT_VERSION = 1
 METADATA = "metadata.json"
-VERSIONED = ("symbench", "mujoco", "dm-control", "numpy", "pyarrow")
+VERSIONED = ("symbench", "mujoco", "dm-control", "numpy", "pyarrow", "numba", "llvmlite", "daqp")
 
 
 def library_versions() -> dict[str, str]:

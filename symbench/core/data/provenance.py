@@ -32,7 +32,8 @@ LIBRARIES = (
     "optax",
     "mujoco",
     "dm-control",
-    "proxsuite",
+    "numba",
+    "daqp",
     "pandas",
     "pyarrow",
 )

@@ -13,54 +13,57 @@ DATASET_VERSION, regenerate, and replace the hashes.
 from __future__ import annotations
 
 LIBRARY_VERSIONS = {
+    "daqp": "0.11.0",
     "dm-control": "1.0.50",
+    "llvmlite": "0.50.0",
     "mujoco": "3.17.0",
+    "numba": "0.68.1",
     "numpy": "2.4.6",
     "pyarrow": "26.0.1",
     "symbench": "0.1.0",
 }
 
 CONTENT_HASHES = {
-    "magneto-climb-smoke-v5": "7e3f1e165eb001e716ff22380e48870569c2eee705dc5ec01bbe10675a8e03ee",
-    "hexa-climb-smoke-v5": "d24975f3236a76ba5e9427c37c1bf419e950d415882df14dee99f331694be9db",
-    "nona-climb-smoke-v5": "570205b105c68096020a13b5320fef88ece87f08e7de63cdf155d720516239cf",
-    "magneto-climb-small-v5": "23de52021a59354a534947859631b26e3e5a7632b64e87d05139a8c0a624a194",
-    "hexa-climb-small-v5": "a84d3a43f4f743b611cc276661af24c9d424a02d7b68380b5cebf7a2daee86a7",
-    "nona-climb-small-v5": "69919b9be1dc8b22128d1ec4f06e6ab6c5e555f742b25d9e040310b236fb540d",
+    "magneto-climb-smoke-v6": ("9448d645bc00a32837ca39de324f866203e00f01d6452bfeadb0f37e7129e67f"),
+    "hexa-climb-smoke-v6": ("d3c2a7ee0219fc338879d7a0a6a65e7c45233baca62ec6289ed4eb82fd3764c9"),
+    "nona-climb-smoke-v6": ("574d81078cca2bf097d19ac4778b4c1e6f42ff4ad89c1d7eaebfd66ff9677887"),
+    "magneto-climb-small-v6": ("39a83af0b7d78d1cbf139cdbe20b5dba55e17cb6a36568e4ec694857292c6df8"),
+    "hexa-climb-small-v6": ("777007e769ad7a0e9f50f1bdf1cd582c08b444b62cf723e6accad2b12d5f837b"),
+    "nona-climb-small-v6": ("bb316801d18a4427adc9ee54e0b3d6c0513a817531945fe4ad2495cbea7e745c"),
     # every slope from floor to ceiling, both leg orders: unseen-inclination, unseen-gait
-    "magneto-climb-transfer-v5": (
-        "534054b1928a5c12a3933717e422741b7751aec05481a31624ae8367a8cb4b5e"
+    "magneto-climb-transfer-v6": (
+        "b7f67da7924c260914009fc47fe1281a0a6f278adba4bcefe64059fd2778cc32"
     ),
-    "hexa-climb-transfer-v5": ("16a2dc368ea5f075780fbde86ff8f6fbab20503090b95d6f587aa552d8940729"),
-    "nona-climb-transfer-v5": ("9b61fdbe495d88707a1f5996baae3606ffa65fe7a70943c947a3dba76850cda1"),
-    # hexa with leg 0 heavier by A (approximately symmetric variants, issue 22)
-    "hexa-asym-0.05-climb-small-v5": (
-        "7e4e37cef42c7d2fec61cb0f2a1fe0d36e7ff31420e55a7be4fa1b0631d66b40"
+    "hexa-climb-transfer-v6": ("2d43be982b921c25525ae991ed89ffbadd887dc254f039763c9dc7188a1e1b35"),
+    "nona-climb-transfer-v6": ("b0e09cf6b5265fa257a98aa7376d1452f55a337b641c969b676701b7af9b1246"),
+    # hexa with leg 0 heavier by A (approximately symmetric variants)
+    "hexa-asym-0.05-climb-small-v6": (
+        "0fbd9db18b415c2f1a0018bee148d70661caf78017d8055671a076d30b866276"
     ),
-    "hexa-asym-0.1-climb-small-v5": (
-        "e7085dfc3a5c577c591006659f9a4440d168452cb7859f2428bd6cc49dac4dce"
+    "hexa-asym-0.1-climb-small-v6": (
+        "772c2741a6e16061af90b424d770cbd76e4031a2710ac65774f4c03b15c180d4"
     ),
-    "hexa-asym-0.2-climb-small-v5": (
-        "13e6ca318e06fbc59da8f4c0ae33fdac93780f7dc9b23396c04d99b04e41d615"
+    "hexa-asym-0.2-climb-small-v6": (
+        "cc97e597f845d9a1c3a3335eb8290ff3f87abf42794bc59195c1aeb27defb03f"
     ),
     # data for control: the grids with torque noise (its draws seeded by each scenario)
-    "magneto-climb-smoke-noisy-v5": (
-        "6af979c0464e9a0f38e2ff4f32b5851fe3c295d20f683175e112fe604636e196"
+    "magneto-climb-smoke-noisy-v6": (
+        "5abbeedf106ac244d7113465fb79260950950b08a7c81dd04e39fdb55738db94"
     ),
-    "hexa-climb-smoke-noisy-v5": (
-        "23561d4ab523556a5876f2eef7a2dd6548f06eb59626a243a46f7506e02dd272"
+    "hexa-climb-smoke-noisy-v6": (
+        "c8088918d9bdc65b40af39e446ff811dfec64d10d925770d494a1b8366d8eed0"
     ),
-    "nona-climb-smoke-noisy-v5": (
-        "a3661d8e67738d26236b7a9c0888f96efa86356596b6e9d72aa34593d08ab35b"
+    "nona-climb-smoke-noisy-v6": (
+        "938587337dd43b0a10dd8fc7757bc5f9a9fe78ea17bc58266f8df2c38fbe438f"
     ),
-    "magneto-climb-small-noisy-v5": (
-        "971714b40301c5c86e5395d6d46cde9047db0aee0be485f0381e6094a67af534"
+    "magneto-climb-small-noisy-v6": (
+        "f8ed11f4a52c87de8f86261f65f138232bfabde127625fc55d644f5c3206ebd4"
     ),
-    "hexa-climb-small-noisy-v5": (
-        "2615e2ff924c499b4fc411b342957dc41212a2dd0321ca9616a9053b19273c8e"
+    "hexa-climb-small-noisy-v6": (
+        "4e87833fd9d55501da8e188798169700296cfdf3d2f2252adae7551adf756ea4"
     ),
-    "nona-climb-small-noisy-v5": (
-        "87b14f4896e069f9b766dd75d1a7e3784f6b31269f3f307ddc8e416cd0a987f0"
+    "nona-climb-small-noisy-v6": (
+        "05e0441726aa0f861e80dba612f84f76c704592e1e2fa695fc5133a52ff8424f"
     ),
 }
 

@@ -4,30 +4,56 @@ from __future__ import annotations
 
 import numpy as np
 
-COS_TILT_LIMIT = np.cos(np.radians(30.0))  # base normal vs surface normal: beyond, it fell
+from symbench.core.sim.contact_kernel import (
+    DIVERGED,
+    DROPPED,
+    FOOT_LOST,
+    HOLDING,
+    TILTED,
+    hold_state,
+)
+
+COS_TILT_LIMIT = float(np.cos(np.radians(30.0)))  # base normal vs surface normal: beyond, it fell
 
 
-def detachment(
-    stance: np.ndarray,
-    contact: np.ndarray,
-    data,
-    base_body: int,
-    normal: np.ndarray,
-    height0: float,
-) -> str | None:
-    """Why the robot counts as fallen off the surface now, or None while it holds on."""
-    if not np.isfinite(data.qacc).all():
+class Detachment:
+    """Why the robot counts as fallen off the surface now (None while it holds on), bound
+    to one MjData: its arrays are looked up once, since this runs at every control step."""
+
+    def __init__(self, data, base_body: int, normal: np.ndarray, height0: float):
+        self._arrays = (data.qacc, data.qpos, data.xmat)
+        self._base_body, self._normal = int(base_body), np.ascontiguousarray(normal, dtype=float)
+        self._min_height = 0.3 * height0
+
+    def __call__(self, stance: np.ndarray, contact: np.ndarray) -> str | None:
+        state = hold_state(
+            *self._arrays,
+            self._base_body,
+            stance,
+            contact,
+            self._normal,
+            self._min_height,
+            COS_TILT_LIMIT,
+        )
+        if state == HOLDING:
+            return None
+        return describe_fall(state, stance, contact, self._arrays[1], self._normal)
+
+
+def describe_fall(
+    state: int, stance: np.ndarray, contact: np.ndarray, qpos: np.ndarray, normal: np.ndarray
+) -> str:
+    """The words for a `contact_kernel` status other than HOLDING."""
+    if state == DIVERGED:
         return "the physics diverged (non-finite accelerations)"
-    lost = stance & ~contact
-    if lost.any():
-        return f"stance foot of leg(s) {', '.join(map(str, np.flatnonzero(lost)))} left the surface"
-    base_z = data.xmat[base_body][2::3]  # third column of R_wb: the base normal
-    if base_z @ normal < COS_TILT_LIMIT:
+    if state == FOOT_LOST:
+        lost = np.flatnonzero(stance & ~contact)
+        return f"stance foot of leg(s) {', '.join(map(str, lost))} left the surface"
+    if state == TILTED:
         return "base tilted more than 30 degrees from the surface normal"
-    height = data.qpos[:3] @ normal
-    if height < 0.3 * height0:
-        return f"base dropped to {height:.3f} m above the surface"
-    return None
+    if state == DROPPED:
+        return f"base dropped to {qpos[:3] @ normal:.3f} m above the surface"
+    return "the whole-body QP had no solution, even without torque limits"
 
 
 PATH_LIMIT_STEPS = 0.5  # base further than this many step lengths from its reference: lost

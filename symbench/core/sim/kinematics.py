@@ -8,6 +8,7 @@ along the coxa's zero direction, z up; femur and tibia pitch about -y (positive 
 from __future__ import annotations
 
 import numpy as np
+from numba import njit
 
 from symbench.core.robot.specs import RobotSpec
 
@@ -27,29 +28,21 @@ def leg_ik(spec: RobotSpec, ankle: np.ndarray) -> np.ndarray:
     A target out of reach is clipped to the nearest reachable knee angle (straight or
     folded leg), so the controller never stops mid-step; the tracking error shows it.
     """
-    return LegIK(spec)(ankle)
+    lengths = np.array([spec.leg.lengths[k] for k in ("coxa", "femur", "tibia")])
+    flat = np.ascontiguousarray(ankle, dtype=float).reshape(-1, 3)
+    q = np.empty(flat.shape)
+    for row, out in zip(flat, q, strict=True):
+        leg_ik_into(row[0], row[1], row[2], lengths, out)
+    return q.reshape(np.shape(ankle))
 
 
-class LegIK:
-    """`leg_ik` for one spec, its length constants looked up once: the controller calls it
-    at every control step, where the lookups cost as much as the arithmetic. The constants
-    are the same Python numbers the expressions used to build each call, so the results are
-    bit for bit those of `leg_ik`."""
-
-    def __init__(self, spec: RobotSpec):
-        self.lc, self.lf, self.lt = (spec.leg.lengths[k] for k in ("coxa", "femur", "tibia"))
-        lf, lt = self.lf, self.lt
-        self.sum_sq = lf * lf + lt * lt
-        self.twice_product = 2 * lf * lt
-
-    def __call__(self, ankle: np.ndarray) -> np.ndarray:
-        lc, lf, lt = self.lc, self.lf, self.lt
-        x, y, height = ankle[..., 0], ankle[..., 1], ankle[..., 2]
-        q = np.empty(ankle.shape)  # filled in place: this runs at every control step
-        q[..., 0] = np.arctan2(y, x)
-        reach = np.hypot(x, y) - lc
-        cos_knee = (reach * reach + height * height - self.sum_sq) / self.twice_product
-        q2 = q[..., 2]
-        np.negative(np.arccos(np.minimum(np.maximum(cos_knee, -1.0), 1.0)), out=q2)  # bends down
-        q[..., 1] = np.arctan2(height, reach) - np.arctan2(lt * np.sin(q2), lf + lt * np.cos(q2))
-        return q
+@njit(cache=True)
+def leg_ik_into(x, y, height, lengths, q):
+    """`leg_ik` of one ankle position (x, y, height) into q (3,); lengths = (coxa, femur,
+    tibia). Compiled: the controller calls it for every leg at every control step."""
+    lc, lf, lt = lengths[0], lengths[1], lengths[2]
+    q[0] = np.arctan2(y, x)
+    reach = np.hypot(x, y) - lc
+    cos_knee = (reach * reach + height * height - (lf * lf + lt * lt)) / (2 * lf * lt)
+    q[2] = -np.arccos(min(max(cos_knee, -1.0), 1.0))  # the knee bends down
+    q[1] = np.arctan2(height, reach) - np.arctan2(lt * np.sin(q[2]), lf + lt * np.cos(q[2]))

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from symbench.core.robot.specs import JOINT_NAMES, RobotSpec
+from symbench.core.sim.contact_kernel import surface_gaps
 from symbench.core.sim.model import (
     BASE,
     PAD_SPHERE_RADIUS,
@@ -93,59 +94,46 @@ class ModelLayout:
         """(n,) distance from each pad's envelope to the surface (`SurfaceProbe`)."""
         return self.probe(model, data).sole_distances()
 
-    def pad_clearances(self, data) -> np.ndarray:
+    def pad_clearances(self, model, data) -> np.ndarray:
         """(n,) distance from each pad's nearest contact sphere to the surface."""
-        return self.probe(None, data).pad_clearances()
+        return self.probe(model, data).pad_clearances()
 
 
 class SurfaceProbe:
     """How far each foot is from the climbing surface, read from MuJoCo's geom poses.
 
-    Bound to one MjData: its arrays' views and the pads' sizes are looked up once, since the
+    Bound to one MjData: its arrays and the pads' sizes are looked up once, since the
     rollout reads these at every control step (a MjData attribute read builds a new array
-    object each time). The arithmetic is the same whether bound once or per call.
+    object each time); the arithmetic is compiled (`contact_kernel.surface_gaps`).
     """
 
     def __init__(self, layout: ModelLayout, model, data):
-        self._xpos, self._xmat = data.geom_xpos, data.geom_xmat
-        self._origin = self._xpos[layout.surface_geom]  # a view: follows the data
-        self._normal = self._xmat[layout.surface_geom][2::3]  # the plane's z axis
-        self._sole, self._pads = layout.sole_geom, layout.pad_geom
-        # pads first: both slices of the gathered rows then start 16-byte aligned, as the
-        # separately gathered arrays did (4 x 3 doubles per leg)
-        self._both = np.concatenate([layout.pad_geom.ravel(), layout.sole_geom])
-        self._n_pads = layout.pad_geom.size
-        self._pad_shape = (*layout.pad_geom.shape, 3)
-        if model is not None:
-            self._radius = model.geom_size[layout.sole_geom, 0]
-            self._half = model.geom_size[layout.sole_geom, 1]
+        self.n = layout.n_legs
+        # the arguments of `surface_gaps` before its outputs
+        self.kernel_args = (
+            data.geom_xpos,
+            data.geom_xmat,
+            int(layout.surface_geom),
+            np.ascontiguousarray(layout.sole_geom, dtype=np.int64),
+            np.ascontiguousarray(layout.pad_geom, dtype=np.int64),
+            np.ascontiguousarray(model.geom_size[layout.sole_geom, 0]),
+            np.ascontiguousarray(model.geom_size[layout.sole_geom, 1]),
+            PAD_SPHERE_RADIUS,
+        )
+
+    def both(self) -> tuple[np.ndarray, np.ndarray]:
+        """(`sole_distances`, `pad_clearances`), computed together."""
+        distance, clearance = np.empty(self.n), np.empty(self.n)
+        surface_gaps(*self.kernel_args, distance, clearance)
+        return distance, clearance
 
     def sole_distances(self) -> np.ndarray:
         """(n,) distance from each pad's envelope (a disk around its contact spheres) to the
         climbing surface, the exact cylinder-plane distance from MuJoCo's geom poses: a
         foot is in contact when this is below the spec's 5 mm."""
-        return self._sole_distances((self._xpos[self._sole] - self._origin) @ self._normal)
+        return self.both()[0]
 
     def pad_clearances(self) -> np.ndarray:
         """(n,) distance from each pad's nearest contact sphere to the surface: the magnet
         pulls (MuJoCo's adhesion acts) when this is within the sphere's contact margin."""
-        return self._pad_clearances((self._xpos[self._pads] - self._origin) @ self._normal)
-
-    def both(self) -> tuple[np.ndarray, np.ndarray]:
-        """(`sole_distances`, `pad_clearances`), with one gather and one subtraction for
-        both; each product with the normal keeps its own shape (the same BLAS calls)."""
-        rel = self._xpos[self._both] - self._origin
-        k = self._n_pads
-        return (
-            self._sole_distances(rel[k:] @ self._normal),
-            self._pad_clearances(rel[:k].reshape(self._pad_shape) @ self._normal),
-        )
-
-    def _sole_distances(self, height: np.ndarray) -> np.ndarray:
-        axis = np.abs(self._xmat[self._sole][:, 2::3] @ self._normal)  # disk axis vs normal
-        radius, half = self._radius, self._half
-        return height - half * axis - radius * np.sqrt(np.maximum(0.0, 1.0 - axis**2))
-
-    @staticmethod
-    def _pad_clearances(height: np.ndarray) -> np.ndarray:
-        return height.min(axis=1) - PAD_SPHERE_RADIUS
+        return self.both()[1]

@@ -44,7 +44,7 @@ from typing import Any
 import numpy as np
 
 from symbench.core.common.errors import SymbenchError
-from symbench.core.sim.failure import detachment, off_path
+from symbench.core.sim.failure import Detachment, off_path
 from symbench.core.sim.scenario import Scenario
 
 GRACE_S = 0.1  # s a stance foot may stay off the surface before the climb counts as failed
@@ -133,6 +133,7 @@ def track(
     step_length = spec.gait.step_length
     # bound once (a MjData attribute read builds a new array object each time)
     probe, contact_distance = lay.probe(model, data), spec.magnet.contact_distance
+    detachment = Detachment(data, lay.base_body, normal, height0)
     qpos, qvel, ctrl, xmat = data.qpos, data.qvel, data.ctrl, data.xmat
     joint_pos, joint_vel, motor, magnet, base_body = (
         lay.qpos,
@@ -155,9 +156,9 @@ def track(
         contact = probe.sole_distances() < contact_distance
         off_steps = np.where(stance_ref[k] & ~contact, off_steps + 1, 0)
         off_too_long = off_steps > grace  # only these count as stance feet that left
-        failure = detachment(
-            off_too_long, ~off_too_long, data, base_body, normal, height0
-        ) or off_path(qpos[:3], base_pos_ref[k], step_length)
+        failure = detachment(off_too_long, ~off_too_long) or off_path(
+            qpos[:3], base_pos_ref[k], step_length
+        )
         if failure is not None:
             break
         last, pose = k, qpos[:7].copy()

@@ -27,9 +27,11 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from symbench.core.common.errors import SymbenchError
+from symbench.core.sim.climb_kernel import climb_steps
+from symbench.core.sim.contact_kernel import HOLDING, QP_FAILED
 from symbench.core.sim.controller import ControlOutput, WholeBodyController
-from symbench.core.sim.failure import detachment
-from symbench.core.sim.gait import STANCE, SWING
+from symbench.core.sim.failure import COS_TILT_LIMIT, describe_fall
+from symbench.core.sim.gait import STANCE, GaitTargets
 from symbench.core.sim.model import SOLE_MARGIN
 from symbench.core.sim.raw import validate_raw
 from symbench.core.sim.scenario import Scenario
@@ -44,36 +46,30 @@ class Rollout:
     metrics: dict[str, float] = field(default_factory=dict)  # tracking, torque, timing
 
 
-class _Recorder:
-    """Pre-allocated raw columns, filled row by row."""
-
-    def __init__(self, n_rows: int, n_legs: int):
-        shapes = {
-            "t": (),
-            "base_pos": (3,),
-            "base_quat": (4,),
-            "base_linvel": (3,),
-            "base_angvel": (3,),
-            "base_linacc": (3,),
-            "q": (n_legs, 3),
-            "qd": (n_legs, 3),
-            "qdd": (n_legs, 3),
-            "tau": (n_legs, 3),
-            "contact": (n_legs,),
-            "magnet": (n_legs,),
-        }
-        self.cols = {k: np.zeros((n_rows, *s)) for k, s in shapes.items()}
-        self.rows = 0
-
-    def trimmed(self) -> dict[str, np.ndarray]:
-        return {k: v[: self.rows] for k, v in self.cols.items()}
-
-
 def _period_steps(period: float, timestep: float, what: str) -> int:
     k = round(period / timestep)
     if k < 1 or abs(k * timestep - period) > 1e-9:
         raise SymbenchError(f"{what} {period} s is not a multiple of the physics step {timestep} s")
     return k
+
+
+def _raw_columns(n_rows: int, n_legs: int) -> dict[str, np.ndarray]:
+    """Pre-allocated raw columns (symbench/core/sim/raw.py), in the loop's order."""
+    shapes = {
+        "t": (),
+        "base_pos": (3,),
+        "base_quat": (4,),
+        "base_linvel": (3,),
+        "base_angvel": (3,),
+        "base_linacc": (3,),
+        "q": (n_legs, 3),
+        "qd": (n_legs, 3),
+        "qdd": (n_legs, 3),
+        "tau": (n_legs, 3),
+        "contact": (n_legs,),
+        "magnet": (n_legs,),
+    }
+    return {k: np.zeros((n_rows, *s)) for k, s in shapes.items()}
 
 
 def run_climb(
@@ -84,6 +80,7 @@ def run_climb(
     control_period: float | None = None,
     torque_noise: float = 0.0,
     noise_seed: list[int] | None = None,
+    on_finish: Callable[[object], None] | None = None,
 ) -> Rollout:
     """Simulate `climb` for `seconds`; stops early (attached=False) when the robot falls.
 
@@ -92,77 +89,84 @@ def run_climb(
     feedback runs at every physics step inside MuJoCo. `torque_noise` (N m) adds Gaussian
     noise, seeded by `noise_seed`, to the executed command at every control step; the
     recorded `tau` is the expert's command without it (see the module's docstring).
+    `on_step(output, physics)`, when given, is called after every physics step (the loop
+    then returns to Python at each step instead of running compiled throughout);
+    `on_finish(physics)` once at the end.
     """
-    import mujoco
-
     from symbench.core.sim.task import load_climb
 
     env = load_climb(climb, time_limit=seconds + 1.0)
     env.reset()
     physics, task = env.physics, env.task
     model, data, lay = physics.model.ptr, physics.data.ptr, physics.layout
-    spec = climb.spec
+    spec, n = climb.spec, climb.spec.n_legs
     controller = WholeBodyController(spec, model, lay, task.plan, climb.base_rotation)
     dt = model.opt.timestep
     n_steps = int(round(seconds / dt))
     every = _period_steps(record_period, dt, "record_period")
     control_every = _period_steps(control_period or dt, dt, "control_period")
-    rec = _Recorder(n_steps // every + 1, spec.n_legs)
-    cols = rec.cols
+    n_control = -(-n_steps // control_every)
+    cols = _raw_columns(n_steps // every + 1, n)
+    stats = _Stats(n_control, n)
+    out = (np.zeros(n, dtype=np.int64), np.zeros(n), *np.zeros((2, 3, 3)), *np.zeros((2, n, 3)))
+    plan_step = np.zeros(2, dtype=np.int64)
+    noise = (
+        np.random.default_rng(noise_seed).normal(0.0, torque_noise, (n_control, n, 3))
+        if torque_noise
+        else np.zeros((0, n, 3))
+    )
     normal, height0 = task.plan.normal, float(task.plan.base_start @ task.plan.normal)
-    kp, kd, limit = spec.control.kp, spec.control.kd, spec.control.torque_limit
-    failure = None
-    stats = _Stats(-(-n_steps // control_every), spec.n_legs)
-    probe, ctrl = lay.probe(model, data), data.ctrl  # bound once: read at every step
-    noise = np.random.default_rng(noise_seed) if torque_noise else None
+    control = spec.control
+    probe = lay.probe(model, data)
+    args = (
+        (dt, control_every, every, SOLE_MARGIN, spec.magnet.contact_distance),
+        controller.kernel_args(data),
+        out,
+        plan_step,
+        probe.kernel_args,
+        (np.ascontiguousarray(normal, dtype=float), 0.3 * height0, COS_TILT_LIMIT),
+        (data.qpos, data.qvel, data.qacc, data.xmat, data.xpos, data.ctrl),
+        (
+            *(np.ascontiguousarray(a, dtype=np.int64) for a in (lay.motor, lay.magnet)),
+            *(np.ascontiguousarray(a, dtype=np.int64) for a in (lay.qpos, lay.dof)),
+            int(lay.base_body),
+            np.ascontiguousarray(lay.ankle_body, dtype=np.int64),
+            control.kp,
+            control.kd,
+            control.torque_limit,
+        ),
+        noise,
+        tuple(cols.values()),
+        stats.arrays,
+    )
+    t0 = float(data.time)
+    climb_steps(0, 0, t0, *args)  # no step: compiles or loads the loop outside the clocks
     wall, cpu = time.perf_counter(), time.process_time()
-    for step in range(n_steps):
-        t = data.time
-        control, row = step % control_every == 0, rec.rows if step % every == 0 else -1
-        if control or row >= 0:
-            distance, clearance = probe.both()
-            contact = distance < spec.magnet.contact_distance
-        if control:
-            out = controller(data, t, clearance < SOLE_MARGIN)
-            ctrl[lay.motor] = out.command
-            if noise is not None:  # executed: the command plus noise; recorded: the command
-                ctrl[lay.motor] += noise.normal(0.0, torque_noise, out.command.shape)
-            ctrl[lay.magnet] = out.magnet
-            stats.update(out, data, lay, task.plan)
-            failure = detachment(
-                out.targets.phase == STANCE, contact, data, lay.base_body, normal, height0
-            )
-            if failure is not None:
-                failure = f"t={t:.3f} s: {failure}"
-                break
-        if row >= 0:
-            r_base = data.xmat[lay.base_body].reshape(3, 3)
-            cols["t"][row] = t
-            cols["base_pos"][row] = data.qpos[:3]
-            cols["base_quat"][row] = data.qpos[3:7]
-            cols["base_linvel"][row] = data.qvel[:3]
-            cols["base_angvel"][row] = r_base @ data.qvel[3:6]
-            cols["q"][row] = q_now = data.qpos[lay.qpos]
-            cols["qd"][row] = qd_now = data.qvel[lay.dof]
-            linvel_now = data.qvel[:3].copy()
-            cols["contact"][row] = contact
-            cols["magnet"][row] = out.magnet > 0.0
-        # dm-control's (legacy) physics step without its per-step Python checks and
-        # observations: finish x_t (step2), then bring x_t+1 up to date (step1)
-        mujoco.mj_step2(model, data)
-        mujoco.mj_step1(model, data)
-        if on_step is not None:
-            on_step(out, physics)
-        if row >= 0:
-            qd_next = data.qvel[lay.dof]
-            cols["tau"][row] = np.clip(out.command - kp * q_now - kd * qd_next, -limit, limit)
-            cols["qdd"][row] = (qd_next - qd_now) / dt
-            cols["base_linacc"][row] = (data.qvel[:3] - linvel_now) / dt
-            rec.rows += 1
+    if on_step is None:
+        steps, t, status = climb_steps(0, n_steps, t0, *args)
+    else:
+        steps, t, status = 0, t0, HOLDING
+        while steps < n_steps and status == HOLDING:
+            steps, t, status = climb_steps(steps, steps + 1, t, *args)
+            if status == HOLDING:
+                phase, magnet, base, sole, command, tau = (a.copy() for a in out)
+                slot, leg = (int(v) for v in plan_step)
+                targets = GaitTargets(phase, magnet, base, slot, leg, sole)
+                on_step(ControlOutput(command, tau, magnet, targets), physics)
     wall, cpu = time.perf_counter() - wall, time.process_time() - cpu
-    arrays = rec.trimmed()
-    validate_raw(arrays, spec.n_legs, source=f"rollout of {spec.name}")
-    metrics = stats.summary(spec, data, task.plan)
+    if on_finish is not None:
+        on_finish(physics)
+    if t != data.time:
+        raise SymbenchError(f"the loop's clock ({t} s) and MuJoCo's ({data.time} s) disagree")
+    failure, control_rows = None, -(-steps // control_every)
+    if status != HOLDING:  # stopped before step `steps` moved; its control row is kept
+        contact = probe.sole_distances() < spec.magnet.contact_distance
+        why = describe_fall(status, out[0] == STANCE, contact, data.qpos, normal)
+        failure = f"t={t:.3f} s: {why}"
+        control_rows = steps // control_every + (status != QP_FAILED)
+    arrays = {k: v[: -(-steps // every)] for k, v in cols.items()}
+    validate_raw(arrays, n, source=f"rollout of {spec.name}")
+    metrics = stats.summary(spec, data, task.plan, control_rows)
     metrics.update(
         sim_seconds=float(data.time),
         wall_seconds=wall,
@@ -174,31 +178,17 @@ def run_climb(
 
 
 class _Stats:
-    """Tracking errors and torque peaks, for `symbench sim check`: the loop only stores
-    rows (a few copies per control step), the errors are computed once at the end."""
+    """Tracking errors and torque peaks, for `symbench sim check`: the loop fills a row per
+    control step, the errors are computed once at the end."""
 
     def __init__(self, n_rows: int, n_legs: int):
         self.base = np.zeros((n_rows, 2, 3))  # planned and measured base position
         self.swing = np.full((n_rows, 2, 3), np.nan)  # swing ankle target and position
         self.tau = np.zeros((n_rows, n_legs, 3))
-        self.rows = 0
-        self.start = None
+        self.arrays = (self.base, self.swing, self.tau)
 
-    def update(self, out: ControlOutput, data, lay, plan) -> None:
-        row = self.rows
-        if self.start is None:
-            self.start = data.qpos[:3].copy()
-        tg = out.targets
-        self.base[row, 0] = tg.base_pos
-        self.base[row, 1] = data.qpos[:3]
-        if tg.step_leg >= 0 and tg.phase[tg.step_leg] == SWING:
-            self.swing[row, 0] = tg.sole_pos
-            self.swing[row, 1] = data.xpos[lay.ankle_body[tg.step_leg]]
-        self.tau[row] = out.tau
-        self.rows += 1
-
-    def summary(self, spec, data, plan) -> dict[str, float]:
-        rows = self.rows
+    def summary(self, spec, data, plan, rows: int) -> dict[str, float]:
+        """The metrics over the first `rows` control steps."""
         base = np.linalg.norm(self.base[:rows, 0] - self.base[:rows, 1], axis=1)
         swinging = self.swing[:rows]
         swinging = swinging[~np.isnan(swinging[:, 0, 0])]
@@ -207,7 +197,7 @@ class _Stats:
         magnitude = np.abs(self.tau[:rows])
         peak = magnitude.max(axis=(0, 1))
         clipped = int(np.count_nonzero(magnitude >= spec.control.torque_limit - 1e-9))
-        walked = float((data.qpos[:3] - self.start) @ plan.direction)
+        walked = float((data.qpos[:3] - self.base[0, 1]) @ plan.direction)
         return {
             "distance_walked": walked,
             "base_error_rms": float(np.sqrt(np.mean(base**2))),

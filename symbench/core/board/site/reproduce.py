@@ -7,7 +7,7 @@ import shlex
 from pathlib import Path
 
 from symbench.core.board.leaderboard import protocol_of
-from symbench.core.data.presets import PRESETS, dataset_id
+from symbench.core.data.presets import PRESETS, dataset_id, parse_dataset_id
 from symbench.core.runs.results import RecordV1
 
 
@@ -15,15 +15,21 @@ def run_command(record: RecordV1) -> str:
     """`symbench run` with every option the record fixes. The variant and the evaluators are
     always given (a model's default variant is its plugin's business, and may change); the
     dataset only when it is not the robot's standard one of the preset, a budget only when
-    it is not the preset's, the build keywords the run set."""
+    it is not the preset's, the build keywords the run set. A standard dataset of an older
+    dataset version is made only by the code of its time: the command checks out the
+    record's commit first."""
     m, d = record.model, record.dataset
-    args = ["symbench", "run", "--model", m.name, "--robot", record.robot]
-    if d.preset not in PRESETS or d.id != dataset_id(record.robot, d.preset):
+    prefix, args = "", ["symbench", "run", "--model", m.name, "--robot", record.robot]
+    if parse_dataset_id(d.id) == (record.robot, d.preset) and d.id != dataset_id(
+        record.robot, d.preset
+    ):
+        prefix = f"git checkout {shlex.quote(record.git_commit.split('+')[0])} && "
+    elif d.preset not in PRESETS or d.id != dataset_id(record.robot, d.preset):
         args += ["--dataset", d.id]
     args += ["--split", record.split, "--seed", str(record.seed), "--preset", d.preset]
     args += ["--backend", m.backend, "--variant", m.variant, "--protocol", protocol_of(record)]
     args += ["--evaluators", ",".join(record.metrics)]
-    return shlex.join(args + _budget(record) + _sizes(record))
+    return prefix + shlex.join(args + _budget(record) + _sizes(record))
 
 
 def _sizes(record: RecordV1) -> list[str]:
