@@ -15,7 +15,14 @@ import pytest
 
 from symbench.core.robot.specs import load_robot
 from symbench.core.sim.arena import Arena
-from symbench.core.sim.contact_kernel import DROPPED, FOOT_LOST, HOLDING, TILTED, hold_state
+from symbench.core.sim.contact_kernel import (
+    DIVERGED,
+    DROPPED,
+    FOOT_LOST,
+    HOLDING,
+    TILTED,
+    hold_state,
+)
 from symbench.core.sim.gait import SETTLE, SWING
 from symbench.core.sim.kinematics import leg_fk, leg_ik
 from symbench.core.sim.model import PAD_SPHERE_RADIUS
@@ -62,7 +69,7 @@ def test_fall_rules_each_fire():
         )
 
     assert judge() == HOLDING
-    assert judge(qacc=np.full(12, np.nan)) == 1
+    assert judge(qacc=np.full(12, np.nan)) == DIVERGED
     assert judge(contact=np.array([True, False, True, True])) == FOOT_LOST
     tilted = xmat.copy()
     tilted[1] = [1, 0, 0, 0, np.cos(0.6), -np.sin(0.6), 0, np.sin(0.6), np.cos(0.6)]

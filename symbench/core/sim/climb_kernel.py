@@ -29,7 +29,8 @@ def climb_steps(
     before its outputs; fall = (normal, min height, cos tilt limit); mj = MjData views
     (qpos, qvel, qacc, xmat, xpos, ctrl); lay = (motor ids (n, 3), magnet ids, qpos and dof
     addresses (n, 3), base body, ankle bodies, servo kp, kd, torque limit); noise (control
-    steps, n, 3) added to the executed command (empty: none); rec: the raw columns; stats
+    steps, n, 3) added to the executed command (empty: none); rec: the raw columns in
+    `raw.RAW_COLUMNS` order; stats
     = (planned and measured base, swing target and ankle, tau) per control step. Status:
     HOLDING, or why it stopped early (a fall, or QP_FAILED) at the returned step.
     """

@@ -101,16 +101,7 @@ class WholeBodyController:
             ),
             int(layout.base_body),
         )
-        self._plan = (
-            np.asarray(plan.order, dtype=np.int64),
-            np.array([spec.gait.release, spec.gait.swing, spec.gait.touchdown]),
-            spec.gait.step_length,
-            spec.gait.swing_height,
-            np.ascontiguousarray(plan.direction, dtype=float),
-            normal,
-            np.ascontiguousarray(plan.base_start, dtype=float),
-            np.ascontiguousarray(plan.soles_start, dtype=float),
-        )
+        self._plan = plan.kernel_args
         control = spec.control
         self._fixed = (
             gain_vector,

@@ -14,6 +14,7 @@ from symbench.core.sim.contact_kernel import (
 )
 
 COS_TILT_LIMIT = float(np.cos(np.radians(30.0)))  # base normal vs surface normal: beyond, it fell
+DROP_FRACTION = 0.3  # base height below this share of its start: it fell
 
 
 class Detachment:
@@ -23,18 +24,11 @@ class Detachment:
     def __init__(self, data, base_body: int, normal: np.ndarray, height0: float):
         self._arrays = (data.qacc, data.qpos, data.xmat)
         self._base_body, self._normal = int(base_body), np.ascontiguousarray(normal, dtype=float)
-        self._min_height = 0.3 * height0
+        # the last arguments of `hold_state`: normal, lowest base height, cos tilt limit
+        self.limits = (self._normal, DROP_FRACTION * height0, COS_TILT_LIMIT)
 
     def __call__(self, stance: np.ndarray, contact: np.ndarray) -> str | None:
-        state = hold_state(
-            *self._arrays,
-            self._base_body,
-            stance,
-            contact,
-            self._normal,
-            self._min_height,
-            COS_TILT_LIMIT,
-        )
+        state = hold_state(*self._arrays, self._base_body, stance, contact, *self.limits)
         if state == HOLDING:
             return None
         return describe_fall(state, stance, contact, self._arrays[1], self._normal)

@@ -124,30 +124,25 @@ class GaitPlan:
         n = self.spec.n_legs
         phase, magnet = np.empty(n, dtype=np.int64), np.empty(n)
         base, sole = np.empty((3, 3)), np.empty((3, 3))
-        slot, leg = gait_targets(
-            t,
-            self._order,
-            self._timing,
-            self.spec.gait.step_length,
-            self.spec.gait.swing_height,
-            self.direction,
-            self.normal,
-            self.base_start,
-            self.soles_start,
-            ZERO3 if liftoff is None else liftoff,
-            -2 if liftoff is None else -1 if liftoff_slot is None else liftoff_slot,
-            phase,
-            magnet,
-            base,
-            sole,
-        )
+        known = -2 if liftoff is None else -1 if liftoff_slot is None else liftoff_slot
+        outputs = (phase, magnet, base, sole)
+        start = ZERO3 if liftoff is None else liftoff
+        slot, leg = gait_targets(*(t, *self.kernel_args, start, known, *outputs))
         return GaitTargets(phase, magnet, base, slot, leg, sole)
 
     @cached_property
-    def _order(self) -> np.ndarray:
-        return np.asarray(self.order, dtype=np.int64)
-
-    @cached_property
-    def _timing(self) -> np.ndarray:
+    def kernel_args(self) -> tuple:
+        """The plan's arguments of `gait_kernel.gait_targets` after t: order, (release,
+        swing, touchdown), step length, swing height, direction, normal, base start,
+        soles at the start, as the compiled code takes them."""
         g = self.spec.gait
-        return np.array([g.release, g.swing, g.touchdown])
+        return (
+            np.asarray(self.order, dtype=np.int64),
+            np.array([g.release, g.swing, g.touchdown]),
+            g.step_length,
+            g.swing_height,
+            *(
+                np.ascontiguousarray(a, dtype=float)
+                for a in (self.direction, self.normal, self.base_start, self.soles_start)
+            ),
+        )

@@ -94,10 +94,6 @@ class ModelLayout:
         """(n,) distance from each pad's envelope to the surface (`SurfaceProbe`)."""
         return self.probe(model, data).sole_distances()
 
-    def pad_clearances(self, model, data) -> np.ndarray:
-        """(n,) distance from each pad's nearest contact sphere to the surface."""
-        return self.probe(model, data).pad_clearances()
-
 
 class SurfaceProbe:
     """How far each foot is from the climbing surface, read from MuJoCo's geom poses.
@@ -122,7 +118,8 @@ class SurfaceProbe:
         )
 
     def both(self) -> tuple[np.ndarray, np.ndarray]:
-        """(`sole_distances`, `pad_clearances`), computed together."""
+        """(`sole_distances`, and each pad's nearest contact sphere's distance to the surface:
+        the magnet pulls when that is within the sphere's contact margin)."""
         distance, clearance = np.empty(self.n), np.empty(self.n)
         surface_gaps(*self.kernel_args, distance, clearance)
         return distance, clearance
@@ -132,8 +129,3 @@ class SurfaceProbe:
         climbing surface, the exact cylinder-plane distance from MuJoCo's geom poses: a
         foot is in contact when this is below the spec's 5 mm."""
         return self.both()[0]
-
-    def pad_clearances(self) -> np.ndarray:
-        """(n,) distance from each pad's nearest contact sphere to the surface: the magnet
-        pulls (MuJoCo's adhesion acts) when this is within the sphere's contact margin."""
-        return self.both()[1]

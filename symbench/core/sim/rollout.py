@@ -30,10 +30,10 @@ from symbench.core.common.errors import SymbenchError
 from symbench.core.sim.climb_kernel import climb_steps
 from symbench.core.sim.contact_kernel import HOLDING, QP_FAILED
 from symbench.core.sim.controller import ControlOutput, WholeBodyController
-from symbench.core.sim.failure import COS_TILT_LIMIT, describe_fall
+from symbench.core.sim.failure import Detachment, describe_fall
 from symbench.core.sim.gait import STANCE, GaitTargets
 from symbench.core.sim.model import SOLE_MARGIN
-from symbench.core.sim.raw import validate_raw
+from symbench.core.sim.raw import RAW_COLUMNS, column_shape, validate_raw
 from symbench.core.sim.scenario import Scenario
 from symbench.core.sim.setup import Climb
 
@@ -54,22 +54,8 @@ def _period_steps(period: float, timestep: float, what: str) -> int:
 
 
 def _raw_columns(n_rows: int, n_legs: int) -> dict[str, np.ndarray]:
-    """Pre-allocated raw columns (symbench/core/sim/raw.py), in the loop's order."""
-    shapes = {
-        "t": (),
-        "base_pos": (3,),
-        "base_quat": (4,),
-        "base_linvel": (3,),
-        "base_angvel": (3,),
-        "base_linacc": (3,),
-        "q": (n_legs, 3),
-        "qd": (n_legs, 3),
-        "qdd": (n_legs, 3),
-        "tau": (n_legs, 3),
-        "contact": (n_legs,),
-        "magnet": (n_legs,),
-    }
-    return {k: np.zeros((n_rows, *s)) for k, s in shapes.items()}
+    """Pre-allocated raw columns, in RAW_COLUMNS' order (the compiled loop's)."""
+    return {c.name: np.zeros((n_rows, *column_shape(c, n_legs))) for c in RAW_COLUMNS}
 
 
 def run_climb(
@@ -124,7 +110,7 @@ def run_climb(
         out,
         plan_step,
         probe.kernel_args,
-        (np.ascontiguousarray(normal, dtype=float), 0.3 * height0, COS_TILT_LIMIT),
+        Detachment(data, lay.base_body, normal, height0).limits,
         (data.qpos, data.qvel, data.qacc, data.xmat, data.xpos, data.ctrl),
         (
             *(np.ascontiguousarray(a, dtype=np.int64) for a in (lay.motor, lay.magnet)),
