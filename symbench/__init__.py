@@ -12,8 +12,9 @@ Building models
     ModelDims, ViewArrays, LegGroup, act, schema
 Writing evaluators
     EvaluationContext, TrainedOnSplit, rmse, relative_error, act_on_raw,
-    rotate_scene_about_gravity, rotate_scene, Scenario, simulate, track, build_view,
-    sample_efficiency_png, held_out_scenarios, reference_scenarios, oracle_policy,
+    rotate_scene_about_gravity, rotate_scene, Scenario, simulate, track, track_batch,
+    TrackJob, feedforward_policy, build_view,
+    sample_efficiency_png, held_out_scenarios, reference_scenarios, oracle_policy, model_jobs,
     dataset_symmetry
 Writing splits
     SplitContext, carve_validation
@@ -65,9 +66,13 @@ _PUBLIC: dict[str, str] = {
     "Scenario": "symbench.core.sim.scenario:Scenario",
     "simulate": "symbench.core.sim.rollout:simulate",
     "track": "symbench.core.sim.learned_control:track",
+    "track_batch": "symbench.core.sim.learned_control:track_batch",
+    "TrackJob": "symbench.core.sim.learned_control:TrackJob",
+    "feedforward_policy": "symbench.core.runs.control_policy:feedforward_policy",
     "held_out_scenarios": "symbench.core.sim.references:held_out_scenarios",
     "reference_scenarios": "symbench.core.sim.references:reference_scenarios",
     "oracle_policy": "symbench.core.sim.references:oracle_policy",
+    "model_jobs": "symbench.core.sim.references:model_jobs",
     "build_view": "symbench.core.data.views:build_view",
     "dataset_symmetry": "symbench.core.data.symmetry_report:dataset_symmetry",
     "sample_efficiency_png": "symbench.core.board.plots:sample_efficiency_png",
@@ -101,6 +106,7 @@ __all__ = [
     "SplitContext",
     "SplitEntry",
     "SymbenchError",
+    "TrackJob",
     "TrainConfig",
     "TrainedOnSplit",
     "ViewArrays",
@@ -110,10 +116,12 @@ __all__ = [
     "build_view",
     "carve_validation",
     "dataset_symmetry",
+    "feedforward_policy",
     "held_out_scenarios",
     "hookimpl",
     "load_robot",
     "model_entry",
+    "model_jobs",
     "oracle_policy",
     "preset",
     "reference_scenarios",
@@ -125,6 +133,7 @@ __all__ = [
     "schema",
     "simulate",
     "track",
+    "track_batch",
     "train",
 ]
 assert set(__all__) == {"__version__", "hookimpl", *_PUBLIC}
@@ -174,15 +183,17 @@ if TYPE_CHECKING:  # what type checkers and editors see
     )
     from symbench.core.plugin.registry import model as model_entry
     from symbench.core.robot.specs import load_robot
+    from symbench.core.runs.control_policy import feedforward_policy
     from symbench.core.runs.evaluation import (
         EvaluationContext,
         TrainedOnSplit,
         relative_error,
         rmse,
     )
-    from symbench.core.sim.learned_control import track
+    from symbench.core.sim.learned_control import TrackJob, track, track_batch
     from symbench.core.sim.references import (
         held_out_scenarios,
+        model_jobs,
         oracle_policy,
         reference_scenarios,
     )

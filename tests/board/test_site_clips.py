@@ -159,39 +159,37 @@ def _build(folder: Path, site: Path) -> subprocess.CompletedProcess:
 def test_the_clip_model_is_the_records(trained):
     """Loaded from its checkpoint, the closed loop's model tracks the evaluator's references
     exactly as it did in the run."""
-    from symbench.core.board.site.clips import (
-        checkpoint_folder,
-        closed_loop_model,
-        feedforward_policy,
-    )
+    from symbench.core.board.site.clips import checkpoint_folder, closed_loop_model
     from symbench.core.data.dataset import load_dataset
     from symbench.core.data.presets import preset
-    from symbench.core.sim.learned_control import expert_reference, track
-    from symbench.core.sim.references import reference_scenarios
+    from symbench.core.runs.control_policy import feedforward_policy
+    from symbench.core.sim.learned_control import expert_reference, track_batch
+    from symbench.core.sim.references import model_jobs, reference_scenarios
     from symbench.core.sim.scenario import Scenario
 
     budget = preset("smoke").closed_loop
+    fractions = [float(f) for f in budget.pd_fractions]
     for path, record in load_records(trained / "results"):
         metrics = record.metrics["closed-loop"]
         dataset = load_dataset(record.dataset.id)
-        policy = feedforward_policy(
-            closed_loop_model(checkpoint_folder(path, record, trained / "results"), record),
-            dataset.frames,
-        )
+        model = closed_loop_model(checkpoint_folder(path, record, trained / "results"), record)
+        policy = feedforward_policy(model.predict, dataset.frames, model.entry.view)
         control = dataset.spec.control
-        gains = (budget.headline_pd * control.kp, budget.headline_pd * control.kd)
         test = dataset.split_indices("iid", 0).test
         rotation = dataset.spec.group.rotation_order
-        held, rmse = [], []
+        references = []
         for fields in reference_scenarios(
             dataset, test, budget.references, budget.seconds, rotation
         ):
             scenario = Scenario.from_dict(fields)
             reference = expert_reference(scenario)
             if reference.attached:
-                result = track(scenario, reference.arrays, policy, gains)
-                held.append(result.time_to_failure_s)
-                rmse.append(result.joint_rmse_rad)
+                references.append((scenario, reference.arrays))
+        jobs = model_jobs(references, fractions, (control.kp, control.kd))
+        results = track_batch(jobs, policy)
+        at_headline = results[fractions.index(budget.headline_pd) :: len(fractions)]
+        held = [r.time_to_failure_s for r in at_headline]
+        rmse = [r.joint_rmse_rad for r in at_headline]
         assert float(np.mean(held)) == pytest.approx(metrics["pd_time_to_failure_s"], rel=1e-12)
         assert float(np.mean(rmse)) == pytest.approx(metrics["pd_joint_rmse_rad"], rel=1e-12)
 

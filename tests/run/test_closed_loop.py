@@ -99,6 +99,27 @@ def test_the_oracle_holds_and_the_pd_alone_does_not(smoke_climb):
     assert floor.time_to_failure_s < oracle.time_to_failure_s
 
 
+def test_a_batch_tracks_each_job_as_alone(smoke_climb):
+    """In lockstep, jobs that fall at once (PD alone, no gains), later (PD alone at the
+    headline) and never (the oracle) each come out exactly as tracked alone: the shared
+    rows belong to their job, and a finished job's rows are left alone."""
+    from symbench.core.sim.learned_control import TrackJob, track_batch
+
+    scenario, ref = smoke_climb
+    oracle, zero = _oracle(ref), (lambda rows: np.zeros_like(ref["tau"][0]))
+    cases = [(zero, 0.0), (oracle, HEADLINE), (zero, HEADLINE), (oracle, 0.0)]
+    jobs = [TrackJob(scenario, ref, _gains(scenario.robot, f)) for _, f in cases]
+
+    def each(rows):  # job i's policy on its own pair of rows
+        pair = [{k: v[2 * i : 2 * i + 2] for k, v in rows.items()} for i in range(len(cases))]
+        return np.stack([policy(r) for (policy, _), r in zip(cases, pair, strict=True)])
+
+    together = track_batch(jobs, each)
+    alone = [track(scenario, ref, policy, job.pd_gains) for (policy, _), job in zip(cases, jobs)]
+    assert together == alone
+    assert len({r.steps for r in together}) >= 2  # some ended before others
+
+
 def test_the_reference_must_be_at_the_physics_step(smoke_climb):
     from symbench import SymbenchError
 

@@ -37,7 +37,7 @@ and the magnet pulls the foot in once it is within reach.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -53,6 +53,9 @@ LOOKAHEAD_S = 0.006  # s: the record period of the standard datasets (the `next`
 # per-sample policy: raw columns of two rows (now, desired ahead) -> torques (n_legs, 3); the
 # rows are filled in place at every step, valid during the call only (copy what is kept)
 Policy = Callable[[dict[str, np.ndarray]], np.ndarray]
+# many samples at once (`track_batch`): rows 2i, 2i + 1 are sample i's two rows -> torques
+# (n_samples, n_legs, 3)
+BatchPolicy = Callable[[dict[str, np.ndarray]], np.ndarray]
 # the raw columns row 0 takes from the simulation (the others come from the reference)
 MEASURED = ("t", "base_pos", "base_quat", "base_linvel", "base_angvel", "q", "qd", "contact")
 # called after every physics step with the dm-control Physics at the new time (read-only: a
@@ -89,6 +92,184 @@ def _angle_deg(q1: np.ndarray, q2: np.ndarray) -> float:
     return float(np.degrees(2.0 * np.arctan2(np.linalg.norm(v), abs(w))))
 
 
+class _Rollout:
+    """One tracking of a reference, stepped from outside so that many run in lockstep:
+    `sense` checks the fall rules and fills the policy's rows for the current step, `act`
+    actuates a feedforward torque and steps the physics, `result` sums it up."""
+
+    def __init__(
+        self,
+        scenario: Scenario,
+        reference: dict[str, np.ndarray],
+        pd_gains: tuple[float, float],
+        lookahead: float,
+        observe: Observer | None,
+        rows: dict[str, np.ndarray],
+    ):
+        from symbench.core.sim.setup import Climb
+        from symbench.core.sim.task import load_climb
+
+        climb = Climb.from_scenario(scenario)
+        spec = climb.spec
+        self.dt = dt = spec.control.timestep
+        self.n_rows = n_rows = len(reference["t"])
+        if n_rows < 2 or abs(float(reference["t"][1] - reference["t"][0]) - dt) > 1e-9:
+            raise SymbenchError(
+                f"track: the reference must be recorded at every physics step ({dt} s); "
+                "make it with expert_reference(scenario)"
+            )
+        self.ahead = max(1, int(round(lookahead / dt)))
+        env = load_climb(climb, time_limit=n_rows * dt + 1.0)
+        env.reset()
+        self.physics, self.plan = env.physics, env.task.plan
+        model, data, lay = self.physics.model.ptr, self.physics.data.ptr, self.physics.layout
+        self.model, self.data, self.observe = model, data, observe
+        self.kp, self.kd, self.limit = spec.control.kp, spec.control.kd, spec.control.torque_limit
+        self.pd_p, self.pd_d = pd_gains
+        normal, height0 = self.plan.normal, float(self.plan.base_start @ self.plan.normal)
+        self.reference = reference
+        self.stance_ref = reference["magnet"] > 0.5
+        self.errors = np.zeros((n_rows, *reference["q"].shape[1:]))
+        self.failure: str | None = None
+        self.k, self.last, self.pose = -1, -1, np.zeros(7)
+        self.off_steps = np.zeros(spec.n_legs, dtype=int)  # steps a stance foot is off
+        self.grace = int(round(GRACE_S / dt))
+        self.step_length = spec.gait.step_length
+        # bound once (a MjData attribute read builds a new array object each time)
+        self.probe, self.contact_distance = lay.probe(model, data), spec.magnet.contact_distance
+        self.detachment = Detachment(data, lay.base_body, normal, height0)
+        self.qpos, self.qvel, self.ctrl, self.xmat = data.qpos, data.qvel, data.ctrl, data.xmat
+        self.joint_pos, self.joint_vel, self.motor, self.magnet, self.base_body = (
+            lay.qpos,
+            lay.dof,
+            lay.motor,
+            lay.magnet,
+            lay.base_body,
+        )
+        self.rows = rows
+        self.unmeasured = [(rows[c], reference[c]) for c in rows if c not in MEASURED]
+        self.ahead_rows = [(rows[c], reference[c]) for c in rows]
+
+    def sense(self) -> bool:
+        """Moves to the next step; False when the rollout is over (the whole reference
+        tracked, or a fall); else the rows hold the policy's input for this step."""
+        self.k = k = self.k + 1
+        if k >= self.n_rows:
+            return False
+        qpos, qvel, rows = self.qpos, self.qvel, self.rows
+        q, qd = qpos[self.joint_pos], qvel[self.joint_vel]
+        contact = self.probe.sole_distances() < self.contact_distance
+        self.off_steps = np.where(self.stance_ref[k] & ~contact, self.off_steps + 1, 0)
+        off_too_long = self.off_steps > self.grace  # only these count as stance feet that left
+        self.failure = self.detachment(off_too_long, ~off_too_long) or off_path(
+            qpos[:3], self.reference["base_pos"][k], self.step_length
+        )
+        if self.failure is not None:
+            return False
+        self.last, self.pose = k, qpos[:7].copy()
+        self.errors[k] = q - self.reference["q"][k]
+        j = min(k + self.ahead, self.n_rows - 1)
+        for row, column in self.ahead_rows:
+            row[1] = column[j]
+        for row, column in self.unmeasured:
+            row[0] = column[k]
+        rows["t"][0] = self.data.time
+        rows["base_pos"][0] = qpos[:3]
+        rows["base_quat"][0] = qpos[3:7]
+        rows["base_linvel"][0] = qvel[:3]
+        rows["base_angvel"][0] = self.xmat[self.base_body].reshape(3, 3) @ qvel[3:6]  # world
+        rows["q"][0] = q
+        rows["qd"][0] = qd
+        rows["contact"][0] = contact
+        return True
+
+    def act(self, tau_ff: np.ndarray) -> None:
+        """Actuates feedforward `tau_ff` with the PD at this step and steps the physics."""
+        import mujoco
+
+        k, ref, dt = self.k, self.reference, self.dt
+        q, qd = self.qpos[self.joint_pos], self.qvel[self.joint_vel]
+        ref_qd, ref_qdd = ref["qd"], ref["qdd"]
+        tau_ff = np.clip(np.asarray(tau_ff, dtype=np.float64), -self.limit, self.limit)
+        qd_next = ref_qd[k + 1] if k + 1 < self.n_rows else ref_qd[k] + dt * ref_qdd[k]
+        self.ctrl[self.motor] = (
+            tau_ff
+            + self.pd_p * (ref["q"][k] - q)
+            + self.kp * q
+            + self.pd_d * qd_next
+            + (self.kd - self.pd_d) * (qd + dt * ref_qdd[k])
+        )
+        self.ctrl[self.magnet] = self.plan.targets(self.data.time).magnet
+        mujoco.mj_step2(self.model, self.data)
+        mujoco.mj_step1(self.model, self.data)
+        if self.observe is not None:
+            self.observe(self.physics)
+
+    def result(self) -> Tracking:
+        failure, last, pose = self.failure, self.last, self.pose
+        held = float(self.data.time) if failure is not None else self.n_rows * self.dt
+        if last < 0:
+            return Tracking(False, failure, held, float("nan"), 0)
+        held_errors = self.errors[: last + 1]
+        drift = float(np.linalg.norm(pose[:3] - self.reference["base_pos"][last]))
+        turn = _angle_deg(pose[3:7], self.reference["base_quat"][last])
+        return Tracking(
+            failure is None,
+            failure,
+            held,
+            float(np.sqrt(np.mean(np.square(held_errors)))),
+            last + 1,
+            float(np.max(np.abs(held_errors))),
+            drift,
+            turn,
+        )
+
+
+@dataclass(frozen=True)
+class TrackJob:
+    """One tracking of `track_batch`: a reference climb (see `expert_reference`) and the PD
+    gains about it; `observe`, when given, sees the physics after every step."""
+
+    scenario: Scenario
+    reference: dict[str, np.ndarray]
+    pd_gains: tuple[float, float] = (0.0, 0.0)
+    observe: Observer | None = None
+
+
+def track_batch(
+    jobs: Sequence[TrackJob], policy: BatchPolicy, lookahead: float = LOOKAHEAD_S
+) -> list[Tracking]:
+    """Run the jobs in lockstep, one `policy` call per physics step for all of them: row
+    2i of its input is job i's measured state, row 2i + 1 its desired state `lookahead`
+    ahead; it returns the feedforward torques (len(jobs), n_legs, 3). A job that is over
+    keeps its last rows (its torque is ignored), so the policy always sees the same batch
+    and a job's torques do not depend on when the others end. The jobs share the columns
+    of their references (one robot)."""
+    if not jobs:
+        return []
+    first = jobs[0].reference
+    columns = [c for c in (*MEASURED, *first) if c in first]
+    stacked = {
+        c: np.zeros((2 * len(jobs), *np.shape(first[c])[1:])) for c in dict.fromkeys(columns)
+    }
+    rollouts = []
+    for i, job in enumerate(jobs):
+        if set(job.reference) != set(first):
+            raise SymbenchError("track_batch: the references of one batch need the same columns")
+        rows = {c: block[2 * i : 2 * i + 2] for c, block in stacked.items()}  # views
+        rollouts.append(
+            _Rollout(job.scenario, job.reference, job.pd_gains, lookahead, job.observe, rows)
+        )
+    live = [r.sense() for r in rollouts]
+    while any(live):
+        torques = policy(stacked)
+        for i, rollout in enumerate(rollouts):
+            if live[i]:
+                rollout.act(torques[i])
+                live[i] = rollout.sense()
+    return [r.result() for r in rollouts]
+
+
 def track(
     scenario: Scenario,
     reference: dict[str, np.ndarray],
@@ -100,109 +281,5 @@ def track(
     """Run `policy` on `scenario` against `reference` (raw columns at every physics step,
     see `expert_reference`) over the reference's whole length; `observe`, when given, sees
     the physics after every step (it must not change it)."""
-    import mujoco
-
-    from symbench.core.sim.setup import Climb
-    from symbench.core.sim.task import load_climb
-
-    climb = Climb.from_scenario(scenario)
-    spec = climb.spec
-    dt = spec.control.timestep
-    n_rows = len(reference["t"])
-    if n_rows < 2 or abs(float(reference["t"][1] - reference["t"][0]) - dt) > 1e-9:
-        raise SymbenchError(
-            f"track: the reference must be recorded at every physics step ({dt} s); "
-            "make it with expert_reference(scenario)"
-        )
-    ahead = max(1, int(round(lookahead / dt)))
-    env = load_climb(climb, time_limit=n_rows * dt + 1.0)
-    env.reset()
-    physics, task = env.physics, env.task
-    model, data, lay = physics.model.ptr, physics.data.ptr, physics.layout
-    kp, kd, limit = spec.control.kp, spec.control.kd, spec.control.torque_limit
-    pd_p, pd_d = pd_gains
-    plan = task.plan
-    normal, height0 = plan.normal, float(plan.base_start @ plan.normal)
-    ref_q, ref_qd, ref_qdd = reference["q"], reference["qd"], reference["qdd"]
-    stance_ref = reference["magnet"] > 0.5
-    base_pos_ref = reference["base_pos"]
-    errors = np.zeros((n_rows, *ref_q.shape[1:]))
-    failure, last, pose = None, -1, np.zeros(7)
-    off_steps = np.zeros(spec.n_legs, dtype=int)  # consecutive steps a stance foot is off
-    grace = int(round(GRACE_S / dt))
-    step_length = spec.gait.step_length
-    # bound once (a MjData attribute read builds a new array object each time)
-    probe, contact_distance = lay.probe(model, data), spec.magnet.contact_distance
-    detachment = Detachment(data, lay.base_body, normal, height0)
-    qpos, qvel, ctrl, xmat = data.qpos, data.qvel, data.ctrl, data.xmat
-    joint_pos, joint_vel, motor, magnet, base_body = (
-        lay.qpos,
-        lay.dof,
-        lay.motor,
-        lay.magnet,
-        lay.base_body,
-    )
-    # the policy's two rows, filled in place at every step (valid during the call only):
-    # row 0 the measured state now (what is not measured, the base acceleration, qdd and
-    # the magnet flags, is the desired motion from the reference), row 1 the desired state
-    # `lookahead` ahead
-    columns = [c for c in (*MEASURED, *reference) if c in reference]
-    rows = {c: np.empty((2, *np.shape(reference[c])[1:])) for c in dict.fromkeys(columns)}
-    unmeasured = [(rows[c], reference[c]) for c in rows if c not in MEASURED]
-    ahead_rows = [(rows[c], reference[c]) for c in rows]
-    for k in range(n_rows):
-        t = data.time
-        q, qd = qpos[joint_pos], qvel[joint_vel]
-        contact = probe.sole_distances() < contact_distance
-        off_steps = np.where(stance_ref[k] & ~contact, off_steps + 1, 0)
-        off_too_long = off_steps > grace  # only these count as stance feet that left
-        failure = detachment(off_too_long, ~off_too_long) or off_path(
-            qpos[:3], base_pos_ref[k], step_length
-        )
-        if failure is not None:
-            break
-        last, pose = k, qpos[:7].copy()
-        errors[k] = q - ref_q[k]
-        j = min(k + ahead, n_rows - 1)
-        for row, column in ahead_rows:
-            row[1] = column[j]
-        for row, column in unmeasured:
-            row[0] = column[k]
-        rows["t"][0] = t
-        rows["base_pos"][0] = qpos[:3]
-        rows["base_quat"][0] = qpos[3:7]
-        rows["base_linvel"][0] = qvel[:3]
-        rows["base_angvel"][0] = xmat[base_body].reshape(3, 3) @ qvel[3:6]  # world frame
-        rows["q"][0] = q
-        rows["qd"][0] = qd
-        rows["contact"][0] = contact
-        tau_ff = np.clip(np.asarray(policy(rows), dtype=np.float64), -limit, limit)
-        qd_next = ref_qd[k + 1] if k + 1 < n_rows else ref_qd[k] + dt * ref_qdd[k]
-        ctrl[motor] = (
-            tau_ff
-            + pd_p * (ref_q[k] - q)
-            + kp * q
-            + pd_d * qd_next
-            + (kd - pd_d) * (qd + dt * ref_qdd[k])
-        )
-        ctrl[magnet] = plan.targets(t).magnet
-        mujoco.mj_step2(model, data)
-        mujoco.mj_step1(model, data)
-        if observe is not None:
-            observe(physics)
-    held = float(data.time) if failure is not None else n_rows * dt
-    if last < 0:
-        return Tracking(False, failure, held, float("nan"), 0)
-    held_errors = errors[: last + 1]
-    drift = float(np.linalg.norm(pose[:3] - reference["base_pos"][last]))
-    turn = _angle_deg(pose[3:7], reference["base_quat"][last])
-    return Tracking(
-        failure is None,
-        failure,
-        held,
-        float(np.sqrt(np.mean(np.square(held_errors)))),
-        last + 1,
-        float(np.max(np.abs(held_errors))),
-        drift,
-        turn,
-    )
+    job = TrackJob(scenario, reference, pd_gains, observe)
+    return track_batch([job], lambda rows: np.asarray(policy(rows))[None], lookahead)[0]

@@ -7,12 +7,14 @@ clips (symbench/core/board/site/clips.py), both through the public API.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 import numpy as np
 
 if TYPE_CHECKING:
-    from symbench.core.sim.learned_control import Policy
+    from symbench.core.sim.learned_control import Policy, TrackJob
+    from symbench.core.sim.scenario import Scenario
 
 
 def held_out_scenarios(dataset, test_ids: np.ndarray, n: int, rotation_order: int = 1) -> list:
@@ -79,3 +81,19 @@ def oracle_policy(reference: dict[str, np.ndarray]) -> Policy:
     tau = reference["tau"]
     dt = float(reference["t"][1] - reference["t"][0])
     return lambda rows: tau[int(round(float(rows["t"][0]) / dt))]
+
+
+def model_jobs(
+    references: Sequence[tuple[Scenario, dict[str, np.ndarray]]],
+    fractions: Sequence[float],
+    servo_gains: tuple[float, float],
+) -> list[TrackJob]:
+    """The closed loop's rollouts of one model, in the evaluator's order: every reference
+    (scenario, the expert's climb at every physics step) at every PD fraction of the servo
+    gains (Kp, Kd), fractions inner. `track_batch` of them with the model's policy is the
+    evaluator's measurement; a model's torques may round differently in another batch, so
+    whoever reproduces one of these rollouts runs this very batch."""
+    from symbench.core.sim.learned_control import TrackJob
+
+    kp, kd = servo_gains
+    return [TrackJob(s, r, (f * kp, f * kd)) for s, r in references for f in fractions]

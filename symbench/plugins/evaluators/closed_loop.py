@@ -28,7 +28,9 @@ Protocol (`symbench presets` shows its numbers, the preset's `closed_loop` group
 - Cost: only the model rows depend on the model. References, expert success, oracle (one
   replay, at the headline fraction: it is the same at every fraction) and floor are kept
   under the output folder (`closed-loop-cache/<key>/`, keyed by dataset content, robot,
-  references and fractions), so the models of a sweep measure them once.
+  references and fractions), so the models of a sweep measure them once. The model's
+  rollouts, every reference at every fraction, run in lockstep (`track_batch`): one model
+  call per physics step for all of them.
 - Metrics per row and fraction: success rate (held the whole horizon: no fall, no stance
   foot lost, base within half a step of the reference's), time to failure, joint tracking
   RMSE (over the time held), base pose drift (position and orientation error at the last
@@ -68,17 +70,11 @@ ROWS = ("model", "oracle", "floor")
 
 
 def evaluate(context: EvaluationContext) -> dict:
-    from symbench import build_view, track
+    from symbench import feedforward_policy, model_jobs, track_batch
 
     trained_on = context.control_dataset()  # the noisy variant of a standard dataset
     trained = context.on_dataset(trained_on, context.split, "next")
-    frames, entry = context.dataset.frames, context.entry
-    pair = np.zeros(2, dtype=np.int64)
-
-    def model(rows: dict[str, np.ndarray]) -> np.ndarray:
-        inputs = build_view(rows, pair, frames, entry.view, "next").inputs
-        return trained.predict(inputs)[0]
-
+    policy = feedforward_policy(trained.predict, context.dataset.frames, context.entry.view)
     budget = context.preset.closed_loop
     control = context.robot.control
     fractions = tuple(float(f) for f in budget.pd_fractions)
@@ -89,20 +85,23 @@ def evaluate(context: EvaluationContext) -> dict:
         budget.seconds,
         context.robot.group.rotation_order,
     )
-    calibration = _calibration(context, scenarios, fractions, float(budget.headline_pd))
+    measured = _calibration(context, scenarios, fractions, float(budget.headline_pd))
+    # None: the expert itself fell, no reference to track
+    kept = [(f, m) for f, m in zip(scenarios, measured, strict=True) if m is not None]
+    calibration = [m for _, m in kept]
+    # every reference at every fraction in lockstep: one model call per physics step
+    references = [(scenario, ref) for scenario, ref, _, _ in calibration]
+    jobs = model_jobs(references, fractions, (control.kp, control.kd))
+    tracked = iter(track_batch(jobs, policy))
     runs: dict[str, dict[float, list]] = {row: {f: [] for f in fractions} for row in ROWS}
-    tried, horizons, orbits = len(scenarios), [], []
-    for fields, measured in zip(scenarios, calibration, strict=True):
-        if measured is None:  # the expert itself fell: no reference to track
-            continue
-        scenario, ref, oracle, floor = measured
-        horizons.append(float(fields["seconds"]))
-        orbits.append(_describe(fields))
-        for f in fractions:
-            gains = (f * control.kp, f * control.kd)
-            runs["model"][f].append(track(scenario, ref, model, gains))
+    for _, _, oracle, floor in calibration:
+        for f in fractions:  # the order of model_jobs
+            runs["model"][f].append(next(tracked))
             runs["oracle"][f].append(oracle)
             runs["floor"][f].append(floor[f])
+    tried = len(scenarios)
+    horizons = [float(fields["seconds"]) for fields, _ in kept]
+    orbits = [_describe(fields) for fields, _ in kept]
     headline = float(budget.headline_pd)
     out: dict = {
         "trained_on": trained_on,

@@ -38,10 +38,11 @@ from symbench.core.board.site.pages import CLOSED_LOOP, group_of, row_key
 from symbench.core.common.atomic import write_bytes_atomic
 from symbench.core.common.errors import SymbenchError
 from symbench.core.data.presets import preset
+from symbench.core.runs.control_policy import feedforward_policy
 from symbench.core.runs.results import RecordV1
 from symbench.core.runs.runner import checkpoint_root
-from symbench.core.sim.learned_control import Policy, Tracking, expert_reference, track
-from symbench.core.sim.references import oracle_policy, reference_scenarios
+from symbench.core.sim.learned_control import Tracking, expert_reference, track, track_batch
+from symbench.core.sim.references import model_jobs, oracle_policy, reference_scenarios
 from symbench.core.sim.render import (
     Camera,
     ClimbRenderer,
@@ -55,7 +56,6 @@ from symbench.core.sim.scenario import Scenario
 
 if TYPE_CHECKING:
     from symbench.core.data.dataset import Dataset
-    from symbench.core.data.frames import LegFrames
     from symbench.core.training.trained_model import TrainedModel
 
 SPLIT = "iid"
@@ -160,8 +160,9 @@ def closed_loop_model(checkpoint: Path, record: RecordV1) -> TrainedModel:
 class Scene:
     """A reference climb with the expert's side of its clip, shared by the page's models."""
 
-    scenario: Scenario
+    scenario: Scenario  # the clip's: the first reference
     reference: dict[str, np.ndarray]  # the expert's climb at every physics step
+    references: list[tuple[Scenario, dict[str, np.ndarray]]]  # all the evaluator tracked
     renderer: ClimbRenderer
     camera: Camera  # the clip's, fixed on the expert's path
     expert: list[Image.Image]  # the expert's labelled frames
@@ -192,8 +193,13 @@ def _clip(
     gains = (headline * control.kp, headline * control.kd)
     scene = _scene(record, dataset, gains, scenes)
     learned = Recording()
-    policy = feedforward_policy(model, dataset.frames)
-    result = track(scene.scenario, scene.reference, policy, gains, observe=learned)
+    policy = feedforward_policy(model.predict, dataset.frames, model.entry.view)
+    # the evaluator's whole batch (see model_jobs), the clip's job observed
+    fractions = [float(f) for f in preset(record.dataset.preset).closed_loop.pd_fractions]
+    jobs = model_jobs(scene.references, fractions, (control.kp, control.kd))
+    shown = fractions.index(headline)  # the first reference at the headline fraction
+    jobs[shown] = replace(jobs[shown], observe=learned)
+    result = track_batch(jobs, policy)[shown]
     times = frame_times(scene.scenario.seconds)
     poses = learned.at(times, scene.renderer.initial)
     fell = f"failed at {result.time_to_failure_s:.2f} s"
@@ -217,31 +223,34 @@ def _clip(
 def _scene(
     record: RecordV1, dataset: Dataset, gains: tuple[float, float], scenes: dict[str, Scene]
 ) -> Scene:
-    """The first reference climb of `record`'s closed loop, with the expert's frames; made
-    once per reference and gains."""
+    """The reference climbs of `record`'s closed loop, with the expert's frames of the
+    first; made once per references and gains."""
     budget = preset(record.dataset.preset).closed_loop
     test = dataset.split_indices(record.split, record.seed).test
     rotation = dataset.spec.group.rotation_order
-    for fields in reference_scenarios(dataset, test, budget.references, budget.seconds, rotation):
-        key = json.dumps([fields, gains], sort_keys=True)
-        if key in scenes:
-            return scenes[key]
-        scenario = Scenario.from_dict(fields)
-        reference = expert_reference(scenario)
-        if not reference.attached:  # the evaluator skips it too
-            continue
-        expert = Recording()
-        track(scenario, reference.arrays, oracle_policy(reference.arrays), gains, observe=expert)
-        renderer = ClimbRenderer(scenario)
-        camera = renderer.camera(reference.arrays["base_pos"])
-        times = frame_times(scenario.seconds)
-        frames = renderer.frames(expert.at(times, renderer.initial), camera)
-        labels = [labelled(f, "expert", f"t = {t:.2f} s") for f, t in zip(frames, times)]
-        scenes[key] = Scene(scenario, reference.arrays, renderer, camera, labels)
+    fields = reference_scenarios(dataset, test, budget.references, budget.seconds, rotation)
+    key = json.dumps([fields, gains], sort_keys=True)
+    if key in scenes:
         return scenes[key]
-    raise SymbenchError(
-        f"no clip for {record.key()}: the expert fell on every closed-loop reference"
-    )
+    references = []
+    for scenario in map(Scenario.from_dict, fields):
+        reference = expert_reference(scenario)
+        if reference.attached:  # the evaluator skips the others too
+            references.append((scenario, reference.arrays))
+    if not references:
+        raise SymbenchError(
+            f"no clip for {record.key()}: the expert fell on every closed-loop reference"
+        )
+    scenario, arrays = references[0]
+    expert = Recording()
+    track(scenario, arrays, oracle_policy(arrays), gains, observe=expert)
+    renderer = ClimbRenderer(scenario)
+    camera = renderer.camera(arrays["base_pos"])
+    times = frame_times(scenario.seconds)
+    frames = renderer.frames(expert.at(times, renderer.initial), camera)
+    labels = [labelled(f, "expert", f"t = {t:.2f} s") for f, t in zip(frames, times)]
+    scenes[key] = Scene(scenario, arrays, references, renderer, camera, labels)
+    return scenes[key]
 
 
 def _dataset(record: RecordV1) -> Dataset:
@@ -256,18 +265,6 @@ def _dataset(record: RecordV1) -> Dataset:
             f"{dataset.content_hash[:12]}..."
         )
     return dataset
-
-
-def feedforward_policy(model: TrainedModel, frames: LegFrames) -> Policy:
-    """The model as `track`'s policy, as the closed-loop evaluator drives it."""
-    from symbench.core.data.views import build_view
-
-    pair = np.zeros(2, dtype=np.int64)
-
-    def policy(rows: dict[str, np.ndarray]) -> np.ndarray:
-        return model.predict(build_view(rows, pair, frames, model.entry.view, "next").inputs)[0]
-
-    return policy
 
 
 def _caption(choice: Choice, result: Tracking, horizon: float, headline: float) -> str:
