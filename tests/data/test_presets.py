@@ -232,8 +232,12 @@ def test_closed_loop_tracks_the_presets_references_over_its_horizon(
             failure=None,
         )
 
+    def track_batch(jobs, policy):  # the model's rollouts, in the order of its jobs
+        return [track(job.scenario, job.reference, policy, job.pd_gains) for job in jobs]
+
     monkeypatch.setattr(symbench, "simulate", simulate)
     monkeypatch.setattr(symbench, "track", track)
+    monkeypatch.setattr(symbench, "track_batch", track_batch)
     budget = ClosedLoop(
         seconds=0.05, references=references, pd_fractions=(0.0, 0.5), headline_pd=0.5
     )

@@ -244,3 +244,34 @@ def test_references_are_the_test_trajectories_by_id():
         {"yaw_deg": 20.0},
         {"yaw_deg": 30.0},
     ]
+
+
+def test_trainings_ahead_in_parallel_give_the_same_record(smoke_home, tmp_path):
+    """With two workers the trainings the evaluators declare (generalization's splits, the
+    closed loop's model on the noisy data) run beside the run's own, in other processes;
+    every model, hence every metric, is the same bit for bit as trained one after another."""
+    records = {}
+    for workers in (1, 2):
+        records[workers] = run(
+            RunSpec(
+                model="sdnn",
+                robot="hexa",
+                preset="smoke",
+                evaluators=("torque-error", "generalization", "closed-loop"),
+                output=tmp_path / f"workers-{workers}",
+                workers=workers,
+                progress=False,
+                max_steps=20,
+            )
+        )
+    alone, together = records[1], records[2]
+    assert together.metrics == alone.metrics
+    assert together.training.checkpoint_sha256 == alone.training.checkpoint_sha256
+    assert "trained_ahead_wall_s" in together.timings_s
+    assert "trained_ahead_wall_s" not in alone.timings_s
+    # the four trainings (iid, unseen-heading, unseen-rotation, noisy iid next) ran ahead
+    folders = sorted(
+        p.relative_to(tmp_path / "workers-2").parts[3:]
+        for p in (tmp_path / "workers-2" / "checkpoints").glob("**/resume.safetensors")
+    )
+    assert len(folders) == 4, folders

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, fields
 from pathlib import Path
 from typing import Any
@@ -126,16 +126,24 @@ class EvaluatorEntry:
     `needs` names what it needs from a dataset beyond its test samples, from
     `EVALUATOR_NEEDS` (e.g. `("simulator", "variant:next")`); a run whose dataset does not
     provide one skips the evaluator, recording the reason instead of its metrics.
+
+    `trainings(context)`, optional, lists the trainings `evaluate` will ask the context for,
+    as (dataset id or None for the run's own, split, variant) triples: a run with more than
+    one worker trains them beside its own model, in parallel, before evaluating. Only a
+    speed-up: whatever `evaluate` asks for is trained anyway, and the same bit for bit.
     """
 
     name: str
     evaluate: Callable[..., dict]
     description: str = ""
     needs: tuple[str, ...] = ()
+    trainings: Callable[..., Sequence[tuple[str | None, str, str]]] | None = None
 
     def __post_init__(self) -> None:
         _check_name("evaluator", self.name)
         _check_callable("evaluator", self.name, "evaluate", self.evaluate)
+        if self.trainings is not None:
+            _check_callable("evaluator", self.name, "trainings", self.trainings)
         needs = self.needs
         if isinstance(needs, str) or not isinstance(needs, (tuple, list)):
             raise InvalidEntryError(

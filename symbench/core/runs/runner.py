@@ -373,9 +373,94 @@ def _check_replaceable(spec: RunSpec, content_hash: str | None = None) -> None:
         raise refusal(spec, why)
 
 
+@dataclass(frozen=True)
+class TrainingJob:
+    """One training a run needs: on dataset `dataset` (None: the run's own), its `split` and
+    input `variant`, with the run's seed and configuration."""
+
+    dataset: str | None
+    split: str
+    variant: str
+
+
+def fit(spec: RunSpec, dataset, job: TrainingJob, sets: tuple | None = None):
+    """Trains `job` into the run's checkpoint folder, or loads it when a finished training is
+    there (`train_ahead` made it, or an earlier, interrupted run): (model, the split's
+    trajectory ids, its (train, val, test) views). On another dataset (a noisy variant for
+    control) the run's test trajectories are left out of training and validation (same grid:
+    same ids). `sets`: the views of a split of the run's own dataset, when already made."""
+    import numpy as np
+
+    from symbench.core.training.loop import train
+
+    entry = replace(model_entry(spec), variant=job.variant)
+    root = checkpoint_root(spec.output, spec.key(), dataset.content_hash)
+    if job.dataset is None or job.dataset == dataset.id:
+        parts = dataset.split_indices(job.split, spec.seed)
+        if sets is None:
+            sets = dataset.split_views(entry.view, job.variant, job.split, spec.seed)
+        folder = root / f"{job.split}__{job.variant}"
+    else:
+        other = ensure_dataset(replace(spec, dataset=job.dataset))
+        held_out = dataset.split_indices(spec.split, spec.seed).test
+        parts = other.split_indices(job.split, spec.seed)
+        ids = (np.setdiff1d(parts.train, held_out), np.setdiff1d(parts.val, held_out), parts.test)
+        arrays = other.view(entry.view, job.variant)
+        sets = tuple(arrays.take(np.isin(arrays.trajectory, i)) for i in ids)
+        folder = root / f"{other.id}-{other.content_hash[:12]}" / f"{job.split}__{job.variant}"
+    model = train(entry, sets[0], sets[1], train_config(spec), checkpoint_dir=folder)
+    return model, parts, sets
+
+
+def _fit_in_worker(item: tuple[RunSpec, TrainingJob]) -> tuple[TrainingJob, float]:
+    spec, job = item
+    start = time.perf_counter()
+    fit(spec, ensure_dataset(spec), job)
+    return job, time.perf_counter() - start
+
+
+def train_ahead(
+    spec: RunSpec, jobs: list[TrainingJob], on_done: Callable[[TrainingJob], None]
+) -> dict[TrainingJob, float]:
+    """Trains `jobs` in `spec.workers` processes at once, each into the run's checkpoint
+    folder, where `fit` then finds it finished; returns each job's own seconds. Each process
+    trains on one thread, as the run itself does, so a model is the same bit for bit
+    whichever process trained it."""
+    from symbench.core.common.processes import run_each
+
+    seconds: dict[TrainingJob, float] = {}
+
+    def done(result: tuple[TrainingJob, float]) -> None:
+        seconds[result[0]] = result[1]
+        on_done(result[0])
+
+    quiet = replace(spec, progress=False, workers=1)
+    run_each(_fit_in_worker, [(quiet, job) for job in jobs], spec.workers, done)
+    return seconds
+
+
+def planned_trainings(context: EvaluationContext, names: tuple[str, ...]) -> list[TrainingJob]:
+    """The trainings the run's evaluators say they will ask for (`EvaluatorEntry.trainings`),
+    without repeats; the run's own training first."""
+    from symbench.core.runs.evaluation import skip_reason
+
+    jobs = [TrainingJob(None, context.split, context.entry.variant)]
+    own = getattr(context.dataset, "id", None)
+    for name in names:
+        entry = registry.evaluator(name)
+        if entry.trainings is None or skip_reason(entry, context.dataset) is not None:
+            continue
+        for did, split, variant in entry.trainings(context):
+            job = TrainingJob(None if did in (None, own) else did, split, variant)
+            if job not in jobs:
+                jobs.append(job)
+    return jobs
+
+
 def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> ResultRecord:
-    """Train and evaluate one model; writes and returns the validated record."""
-    from symbench.core.training.loop import batches_per_epoch, train
+    """Train and evaluate one model; writes and returns the validated record. With more than
+    one worker, the trainings the evaluators declare run beside the run's own, in parallel."""
+    from symbench.core.training.loop import batches_per_epoch
     from symbench.core.training.resume import BEST_DIR
 
     check_names(spec)
@@ -388,54 +473,26 @@ def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> 
     dataset = timer.measure("dataset_s", ensure_dataset, spec)
     _check_replaceable(spec, dataset.content_hash)
     checkpoints = checkpoint_root(spec.output, spec.key(), dataset.content_hash)
-
-    def train_on(split: str, variant: str):
-        model_of = replace(entry, variant=variant)
-        parts = dataset.split_indices(split, spec.seed)
-        train_set, val_set, test_set = dataset.split_views(entry.view, variant, split, spec.seed)
-        model = train(
-            model_of, train_set, val_set, config, checkpoint_dir=checkpoints / f"{split}__{variant}"
-        )
-        return model, parts, (train_set, val_set, test_set)
-
-    on_stage("training")
-    model, parts, (train_set, val_set, test_set) = timer.measure(
-        "training_s", train_on, spec.split, entry.variant
+    parts = dataset.split_indices(spec.split, spec.seed)
+    train_set, val_set, test_set = dataset.split_views(
+        entry.view, entry.variant, spec.split, spec.seed
     )
-    best_checkpoint = checkpoint_file_hashes(
-        checkpoints / f"{spec.split}__{entry.variant}" / BEST_DIR
-    )
+    trained: list = []  # the run's own model, once trained
 
     def retrain(split: str, variant: str) -> TrainedOnSplit:
         on_stage(f"training on {split} ({variant} variant)")
-        other, _, (_, _, other_test) = timer.measure("retraining_s", train_on, split, variant)
+        job = TrainingJob(None, split, variant)
+        other, _, (_, _, other_test) = timer.measure("retraining_s", fit, spec, dataset, job)
         return TrainedOnSplit(split, variant, other.predict, other_test)
 
     def retrain_on(did: str, split: str, variant: str) -> TrainedOnSplit:
         """Train on dataset `did` (a noisy variant: made when missing), same split, seed and
-        configuration, leaving out this run's test trajectories (same grid: same ids)."""
-        import numpy as np
-
+        configuration, leaving out this run's test trajectories."""
         on_stage(f"training on {did} {split} ({variant} variant)")
-
-        def made_and_trained():
-            other = ensure_dataset(replace(spec, dataset=did))
-            split_ids = other.split_indices(split, spec.seed)
-            ids = (
-                np.setdiff1d(split_ids.train, parts.test),
-                np.setdiff1d(split_ids.val, parts.test),
-                split_ids.test,
-            )
-            arrays = other.view(entry.view, variant)
-            sets = [arrays.take(np.isin(arrays.trajectory, i)) for i in ids]
-            folder = checkpoints / f"{other.id}-{other.content_hash[:12]}" / f"{split}__{variant}"
-            trained = train(
-                replace(entry, variant=variant), sets[0], sets[1], config, checkpoint_dir=folder
-            )
-            return TrainedOnSplit(split, variant, trained.predict, sets[2])
-
         # the data and the training, both inside the evaluation's time like any retraining
-        return timer.measure("retraining_s", made_and_trained)
+        job = TrainingJob(did, split, variant)
+        other, _, sets = timer.measure("retraining_s", fit, spec, dataset, job)
+        return TrainedOnSplit(split, variant, other.predict, sets[2])
 
     context = EvaluationContext(
         entry=entry,
@@ -443,12 +500,38 @@ def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> 
         preset=preset(spec.preset),
         split=spec.split,
         seed=spec.seed,
-        predict=model.predict,
+        predict=lambda inputs: trained[0].predict(inputs),
         test=test_set,
         test_trajectories=parts.test,
         output_dir=spec.output,
         retrain=retrain,
         retrain_on=retrain_on,
+    )
+    jobs = planned_trainings(context, spec.evaluators)
+    ahead: dict[TrainingJob, float] = {}
+
+    def trained_one(job: TrainingJob) -> None:
+        on_stage(f"trained on {job.dataset or dataset.id} {job.split} ({job.variant} variant)")
+
+    if spec.workers > 1 and len(jobs) > 1:
+        for job in jobs:  # the data first, simulated with all workers where missing
+            if job.dataset is not None:
+                ensure_dataset(replace(spec, dataset=job.dataset))
+        on_stage(f"training {len(jobs)} models, {min(spec.workers, len(jobs))} at a time")
+        ahead = timer.measure(
+            "trained_ahead_wall_s",
+            train_ahead,
+            spec,
+            jobs,
+            trained_one,
+        )
+    on_stage("training")
+    model, _, _ = timer.measure(
+        "training_s", fit, spec, dataset, jobs[0], (train_set, val_set, test_set)
+    )
+    trained.append(model)
+    best_checkpoint = checkpoint_file_hashes(
+        checkpoints / f"{spec.split}__{entry.variant}" / BEST_DIR
     )
     metrics = timer.measure(
         "evaluation_s",
@@ -459,6 +542,11 @@ def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> 
     )
     # evaluators retrain inside their own time: report each second once
     timer.timings["evaluation_s"] -= timer.timings.get("retraining_s", 0.0)
+    # a training made ahead counts its own time, wherever it ran (the parallel stage's wall
+    # time is trained_ahead_wall_s)
+    for job, seconds in ahead.items():
+        name = "training_s" if job == jobs[0] else "retraining_s"
+        timer.timings[name] = timer.timings.get(name, 0.0) + seconds
     if config.protocol == "paper":
         epochs = len(model.history["train_loss"])
     else:  # full passes over the training data

@@ -60,7 +60,9 @@ def finished(spec: RunSpec, content_hash: str | None = None) -> bool:
 
 
 def _run_quietly(spec: RunSpec) -> str:
-    run(replace(spec, progress=False))
+    """One run of a sweep, on the one process the sweep gives it (its trainings one after
+    the other: the sweep's workers are the parallelism)."""
+    run(replace(spec, progress=False, workers=1))
     return spec.key()
 
 

@@ -40,6 +40,12 @@ NEEDS: dict[str, tuple[str, ...]] = {
 @symbench.hookimpl
 def symbench_evaluators() -> list[EvaluatorEntry]:
     return [
-        EvaluatorEntry(m.NAME, evaluate=m.evaluate, description=m.DESCRIPTION, needs=NEEDS[m.NAME])
+        EvaluatorEntry(
+            m.NAME,
+            evaluate=m.evaluate,
+            description=m.DESCRIPTION,
+            needs=NEEDS[m.NAME],
+            trainings=getattr(m, "trainings", None),  # those that train declare it
+        )
         for m in MODULES
     ]

@@ -69,6 +69,12 @@ DESCRIPTION = (
 ROWS = ("model", "oracle", "floor")
 
 
+def trainings(context: EvaluationContext) -> list[tuple[str | None, str, str]]:
+    """The model it tracks with: the `next` variant on the data for control, for a run to
+    train ahead."""
+    return [(context.control_dataset(), context.split, "next")]
+
+
 def evaluate(context: EvaluationContext) -> dict:
     from symbench import feedforward_policy, model_jobs, track_batch
 

@@ -17,6 +17,20 @@ DESCRIPTION = (
 SPLITS = ("iid", "unseen-heading", "unseen-rotation")
 
 
+def trainings(context: EvaluationContext) -> list[tuple[str | None, str, str]]:
+    """The splits `evaluate` trains on (those the dataset can make), for a run to train
+    ahead."""
+    return [(None, split, context.entry.variant) for split in SPLITS if _makeable(context, split)]
+
+
+def _makeable(context: EvaluationContext, split: str) -> bool:
+    try:  # labelling trajectories is cheap
+        context.dataset.split_indices(split, context.seed)
+    except SymbenchError:
+        return False
+    return True
+
+
 def evaluate(context: EvaluationContext) -> dict:
     out: dict = {}
     trained, skipped = [], {}

@@ -12,11 +12,21 @@ DESCRIPTION = (
 )
 
 
+def _splits(context: EvaluationContext) -> list[str]:
+    return [f"fraction-{f:g}" for f in context.preset.sample_efficiency.fractions] + ["iid"]
+
+
+def trainings(context: EvaluationContext) -> list[tuple[str | None, str, str]]:
+    """The splits `evaluate` trains on, for a run to train ahead."""
+    return [(None, split, context.entry.variant) for split in _splits(context)]
+
+
 def evaluate(context: EvaluationContext) -> dict:
-    curve = {}
-    for f in context.preset.sample_efficiency.fractions:
-        curve[str(f)] = split_metrics(context.on_split(f"fraction-{f:g}"))["rmse"]
-    curve["1.0"] = split_metrics(context.on_split("iid"))["rmse"]
+    fractions = [str(f) for f in context.preset.sample_efficiency.fractions] + ["1.0"]
+    curve = {
+        f: split_metrics(context.on_split(split))["rmse"]
+        for f, split in zip(fractions, _splits(context), strict=True)
+    }
     e = context.entry  # one plot per run: named like its record, so no run overwrites another's
     run = f"{context.dataset.id}__{context.preset.name}__{e.name}__{e.variant}__{e.backend}"
     plot = context.output_dir / f"{run}__seed{context.seed}-sample-efficiency.png"
