@@ -30,7 +30,8 @@ Protocol (`symbench presets` shows its numbers, the preset's `closed_loop` group
   under the output folder (`closed-loop-cache/<key>/`, keyed by dataset content, robot,
   references and fractions), so the models of a sweep measure them once. The model's
   rollouts, every reference at every fraction, run in lockstep (`track_batch`): one model
-  call per physics step for all of them.
+  call per physics step for all of them. Its model is declared (`trainings`), so a run with
+  two workers trains it beside the run's own.
 - Metrics per row and fraction: success rate (held the whole horizon: no fall, no stance
   foot lost, base within half a step of the reference's), time to failure, joint tracking
   RMSE (over the time held), base pose drift (position and orientation error at the last
