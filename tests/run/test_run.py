@@ -219,3 +219,33 @@ def test_provenance_of_a_third_party_model_and_of_overridden_hyperparameters():
         "mirror": 0,
         "ring": 0,
     }
+
+
+@pytest.mark.parametrize(("mirror", "respects_mirrors"), [(0, False), (1, True)])
+def test_the_equivariance_evaluator_measures_the_geometry_mirrors_too(
+    smoke_home, tmp_path, mirror, respects_mirrors
+):
+    """hexa's declared group is C6; its geometry, D6, also has six mirrors. The evaluator
+    reports them apart: near zero only for the model built for them (sdnn with mirror=1),
+    visibly not for plain sdnn, which is equivariant to the rotations either way."""
+    record = run(
+        RunSpec(
+            model="sdnn",
+            robot="hexa",
+            preset="smoke",
+            evaluators=("equivariance",),
+            output=tmp_path,
+            progress=False,
+            max_steps=20,
+            sizes=(("mirror", mirror),),
+        )
+    )
+    metrics = record.metrics["equivariance"]
+    assert metrics["group"] == "C6" and metrics["geometry_group"] == "D6"
+    assert len(metrics["per_element"]) == 6 and len(metrics["mirror_per_element"]) == 6
+    assert all(name.startswith("mirror") for name in metrics["mirror_per_element"])
+    assert metrics["max_rel_error"] < 1e-4
+    if respects_mirrors:
+        assert metrics["mirror_max_rel_error"] < 1e-4
+    else:
+        assert metrics["mirror_max_rel_error"] > 1e-3
