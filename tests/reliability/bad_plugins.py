@@ -57,6 +57,10 @@ def misshaped(shape: str, backend: str) -> ModelEntry:
     )
 
 
+def _no_plan(context) -> list:
+    raise KeyError("split")
+
+
 class BadPlugin:
     @hookimpl
     def symbench_models(self) -> list:
@@ -64,7 +68,10 @@ class BadPlugin:
 
     @hookimpl
     def symbench_evaluators(self) -> list:
-        return [EvaluatorEntry("pairs", evaluate=lambda context: [("rmse", 1.0)])]
+        return [
+            EvaluatorEntry("pairs", evaluate=lambda context: [("rmse", 1.0)]),
+            EvaluatorEntry("plans-badly", evaluate=lambda context: {}, trainings=_no_plan),
+        ]
 
     @hookimpl
     def symbench_robots(self) -> Any:

@@ -261,6 +261,27 @@ def test_an_evaluator_that_returns_no_mapping_is_named(smoke_hexa, tmp_path):
     )
 
 
+def test_an_evaluator_whose_declared_trainings_fail_is_named(smoke_hexa, tmp_path):
+    with bad_plugin_installed():
+        message = error_line(
+            invoke(
+                "run",
+                "--model",
+                "ffnn",
+                "--robot",
+                "hexa",
+                "--preset",
+                "smoke",
+                "--evaluators",
+                "plans-badly",
+                "--output",
+                tmp_path,
+            ),
+            1,
+        )
+    assert message == "Error: evaluator 'plans-badly': trainings() failed: KeyError: 'split'"
+
+
 class Crashing:
     @hookimpl
     def symbench_commands(self, cli: click.Group) -> None:

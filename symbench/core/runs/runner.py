@@ -450,7 +450,17 @@ def planned_trainings(context: EvaluationContext, names: tuple[str, ...]) -> lis
         entry = registry.evaluator(name)
         if entry.trainings is None or skip_reason(entry, context.dataset) is not None:
             continue
-        for did, split, variant in entry.trainings(context):
+        try:
+            declared = [
+                (did, str(split), str(variant)) for did, split, variant in entry.trainings(context)
+            ]
+        except SymbenchError:
+            raise
+        except Exception as exc:  # a plugin's bug, named before any minute is spent
+            raise SymbenchError(
+                f"evaluator '{name}': trainings() failed: {type(exc).__name__}: {exc}"
+            ) from exc
+        for did, split, variant in declared:
             job = TrainingJob(None if did in (None, own) else did, split, variant)
             if job not in jobs:
                 jobs.append(job)
