@@ -62,7 +62,9 @@ def run_key(
 
 
 class _Strict(BaseModel):
-    model_config = ConfigDict(extra="forbid", frozen=True)
+    # no NaN or infinity in a float field: JSON has none, and pydantic would write them as
+    # null, a record that no longer reads back
+    model_config = ConfigDict(extra="forbid", frozen=True, allow_inf_nan=False)
 
 
 class PluginInfo(_Strict):
