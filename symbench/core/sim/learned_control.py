@@ -157,7 +157,7 @@ class _Rollout:
         if k >= self.n_rows:
             return False
         qpos, qvel, rows = self.qpos, self.qvel, self.rows
-        q, qd = qpos[self.joint_pos], qvel[self.joint_vel]
+        self.q, self.qd = q, qd = qpos[self.joint_pos], qvel[self.joint_vel]
         contact = self.probe.sole_distances() < self.contact_distance
         self.off_steps = np.where(self.stance_ref[k] & ~contact, self.off_steps + 1, 0)
         off_too_long = self.off_steps > self.grace  # only these count as stance feet that left
@@ -188,7 +188,7 @@ class _Rollout:
         import mujoco
 
         k, ref, dt = self.k, self.reference, self.dt
-        q, qd = self.qpos[self.joint_pos], self.qvel[self.joint_vel]
+        q, qd = self.q, self.qd  # read by `sense` at this step: nothing moved since
         ref_qd, ref_qdd = ref["qd"], ref["qdd"]
         tau_ff = np.clip(np.asarray(tau_ff, dtype=np.float64), -self.limit, self.limit)
         qd_next = ref_qd[k + 1] if k + 1 < self.n_rows else ref_qd[k] + dt * ref_qdd[k]
