@@ -37,7 +37,7 @@ BUDGETS = {
         "grid_seconds": 2.6,
     },
     "paper": {
-        "training": Training(max_steps=200000, eval_every=2000, patience=10, max_epochs=500),
+        "training": Training(max_steps=200000, eval_every=5000, patience=4, max_epochs=500),
         "horizon_s": 10.0,
         "references": 8,
         "grid_seconds": 10.0,
@@ -124,8 +124,8 @@ def test_presets_json_is_every_preset_with_every_number():
         assert list(shown[name]) == ["name", "description", *SECTIONS]
     assert shown["paper"]["training"] == {
         "max_steps": 200000,
-        "eval_every": 2000,
-        "patience": 10,
+        "eval_every": 5000,
+        "patience": 4,
         "max_epochs": 500,
     }
     assert shown["smoke"]["closed_loop"] == {
