@@ -250,8 +250,9 @@ def test_trainings_ahead_in_parallel_give_the_same_record(smoke_home, tmp_path):
     """With two workers the trainings the evaluators declare (generalization's splits, the
     closed loop's model on the noisy data) run beside the run's own, in other processes;
     every model, hence every metric, is the same bit for bit as trained one after another."""
-    records = {}
+    records, stages = {}, {}
     for workers in (1, 2):
+        stages[workers] = []
         records[workers] = run(
             RunSpec(
                 model="sdnn",
@@ -262,9 +263,16 @@ def test_trainings_ahead_in_parallel_give_the_same_record(smoke_home, tmp_path):
                 workers=workers,
                 progress=False,
                 max_steps=20,
-            )
+            ),
+            stages[workers].append,
         )
     alone, together = records[1], records[2]
+    noisy = "hexa-climb-smoke-noisy-v6 iid (next variant)"
+    assert "training" in stages[1] and f"training on {noisy}" in stages[1]
+    # the stages say that the models trained ahead are loaded, not trained again
+    assert "training" not in stages[2] and not any(s.startswith("training on") for s in stages[2])
+    assert "loading the model trained ahead" in stages[2]
+    assert f"loading the model trained ahead on {noisy}" in stages[2]
     assert together.metrics == alone.metrics
     assert together.training.checkpoint_sha256 == alone.training.checkpoint_sha256
     assert "trained_ahead_wall_s" in together.timings_s

@@ -1,4 +1,5 @@
-"""An interrupted sweep resumes without redoing finished runs."""
+"""An interrupted sweep resumes without redoing finished runs; it makes every dataset its
+runs need before they start."""
 
 from __future__ import annotations
 
@@ -7,6 +8,7 @@ import signal
 import subprocess
 import sys
 import time
+from dataclasses import replace
 from pathlib import Path
 
 from symbench.core.runs.results import read_record
@@ -85,3 +87,39 @@ def test_sweep_on_a_local_ray_cluster(smoke_home, tmp_path):
         ray.shutdown()
     assert sorted(ran) == sorted(s.key() for s in specs)
     assert [read_record(s.record_path).model.name for s in specs] == ["sdnn", "ffnn"]
+
+
+def test_a_sweep_makes_the_data_its_evaluators_train_on_before_any_run(
+    smoke_home, tmp_path, monkeypatch
+):
+    """The closed loop trains on the noisy variant: the sweep makes it first, with its own
+    workers, instead of letting parallel runs race to simulate it."""
+    import shutil
+
+    from symbench.core.runs import sweep as sweeping
+    from symbench.core.runs.runner import declared_datasets, ensure_dataset
+
+    home = tmp_path / "home"
+    shutil.copytree(
+        smoke_home / "datasets" / "hexa-climb-smoke-v6", home / "datasets" / "hexa-climb-smoke-v6"
+    )
+    monkeypatch.setenv("SYMBENCH_HOME", str(home))
+    noisy = home / "datasets" / "hexa-climb-smoke-noisy-v6"
+    seen: list[bool] = []
+    monkeypatch.setattr(
+        sweeping, "_run_quietly", lambda spec: seen.append(noisy.is_dir()) or spec.key()
+    )
+    base = RunSpec(
+        model="", robot="", preset="smoke", evaluators=("torque-error",), output=tmp_path / "out"
+    )
+    plain = plan(("sdnn", "ffnn"), ["hexa"], ["iid"], [0], ["torch"], base)
+    assert declared_datasets(plain[0], ensure_dataset(plain[0])) == []
+    sweep(plain, report=lambda message: None)
+    assert seen == [False, False]  # no evaluator asked for it: not made
+
+    controlled = [replace(s, evaluators=("torque-error", "closed-loop")) for s in plain]
+    dataset = ensure_dataset(controlled[0])
+    assert declared_datasets(controlled[0], dataset) == ["hexa-climb-smoke-noisy-v6"]
+    seen.clear()
+    sweep(controlled, report=lambda message: None)
+    assert seen == [True, True]

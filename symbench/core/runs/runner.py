@@ -467,6 +467,32 @@ def planned_trainings(context: EvaluationContext, names: tuple[str, ...]) -> lis
     return jobs
 
 
+def _not_while_planning(*_: object) -> Any:
+    raise SymbenchError("an evaluator's trainings() may declare trainings, not run them")
+
+
+def declared_datasets(spec: RunSpec, dataset) -> list[str]:
+    """The other datasets the run's evaluators declare trainings on (the closed loop's noisy
+    variant), so that a sweep makes each once before runs that need it start side by side."""
+    entry = model_entry(spec)
+    parts = dataset.split_indices(spec.split, spec.seed)
+    context = EvaluationContext(
+        entry=entry,
+        dataset=dataset,
+        preset=preset(spec.preset),
+        split=spec.split,
+        seed=spec.seed,
+        predict=_not_while_planning,
+        test=dataset.split_views(entry.view, entry.variant, spec.split, spec.seed)[2],
+        test_trajectories=parts.test,
+        output_dir=spec.output,
+        retrain=_not_while_planning,
+        retrain_on=_not_while_planning,
+    )
+    jobs = planned_trainings(context, spec.evaluators)
+    return [job.dataset for job in jobs if job.dataset is not None]
+
+
 def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> ResultRecord:
     """Train and evaluate one model; writes and returns the validated record. With more than
     one worker, the trainings the evaluators declare run beside the run's own, in parallel."""
@@ -489,18 +515,24 @@ def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> 
     )
     trained: list = []  # the run's own model, once trained
 
+    def announce(job: TrainingJob) -> None:
+        """Says whether the stage trains, or loads what `train_ahead` trained."""
+        verb = "loading the model trained ahead" if job in ahead else "training"
+        target = f"{job.dataset} {job.split}" if job.dataset else job.split
+        on_stage(verb if job == jobs[0] else f"{verb} on {target} ({job.variant} variant)")
+
     def retrain(split: str, variant: str) -> TrainedOnSplit:
-        on_stage(f"training on {split} ({variant} variant)")
         job = TrainingJob(None, split, variant)
+        announce(job)
         other, _, (_, _, other_test) = timer.measure("retraining_s", fit, spec, dataset, job)
         return TrainedOnSplit(split, variant, other.predict, other_test)
 
     def retrain_on(did: str, split: str, variant: str) -> TrainedOnSplit:
         """Train on dataset `did` (a noisy variant: made when missing), same split, seed and
         configuration, leaving out this run's test trajectories."""
-        on_stage(f"training on {did} {split} ({variant} variant)")
         # the data and the training, both inside the evaluation's time like any retraining
         job = TrainingJob(did, split, variant)
+        announce(job)
         other, _, sets = timer.measure("retraining_s", fit, spec, dataset, job)
         return TrainedOnSplit(split, variant, other.predict, sets[2])
 
@@ -535,7 +567,7 @@ def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> 
             jobs,
             trained_one,
         )
-    on_stage("training")
+    announce(jobs[0])
     model, _, _ = timer.measure(
         "training_s", fit, spec, dataset, jobs[0], (train_set, val_set, test_set)
     )

@@ -8,8 +8,10 @@ before any run starts, naming the first difference, unless the runs say `overwri
 they run again and replace those records. A record that cannot be trusted (corrupt, edited,
 schema 1) is redone; records are written atomically, so a run killed half-way leaves none and
 is simply redone. Datasets are made (or loaded) once each before the records are compared,
-so parallel runs never race to generate them. Local workers exit with the sweep, however it
-ends (`processes`); Ctrl-C reports how many runs have records, counted on disk.
+and so are the datasets the runs' evaluators declare trainings on (the closed loop's noisy
+variant), with all of the sweep's workers, so parallel runs never race to generate them.
+Local workers exit with the sweep, however it ends (`processes`); Ctrl-C reports how many
+runs have records, counted on disk.
 """
 
 from __future__ import annotations
@@ -24,6 +26,7 @@ from symbench.core.runs import ray_executor
 from symbench.core.runs.runner import (
     RunSpec,
     check_names,
+    declared_datasets,
     ensure_dataset,
     record_state,
     refusal,
@@ -80,15 +83,16 @@ def sweep(
         raise SymbenchError(f"unknown executor '{executor}' (local, ray)")
     if workers < 1:
         raise SymbenchError(f"workers must be at least 1, got {workers}")
-    hashes = {
-        s.dataset_id: ensure_dataset(s).content_hash
-        for s in {s.dataset_id: s for s in specs}.values()
-    }
+    datasets = {s.dataset_id: ensure_dataset(s) for s in {s.dataset_id: s for s in specs}.values()}
+    hashes = {did: dataset.content_hash for did, dataset in datasets.items()}
     states = [(s, *record_state(s, hashes[s.dataset_id])) for s in specs]
     refused = [(s, why) for s, state, why in states if state == "different" and not s.overwrite]
     if refused:
         raise refusal(*refused[0], more=len(refused) - 1)
     todo = [s for s, state, _ in states if state != "same"]
+    declared = {did: s for s in todo for did in declared_datasets(s, datasets[s.dataset_id])}
+    for did, s in declared.items():
+        ensure_dataset(replace(s, dataset=did, workers=workers))
     report(
         f"{len(specs) - len(todo)} of {len(specs)} runs already have records; {len(todo)} to run"
     )
