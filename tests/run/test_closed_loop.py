@@ -283,3 +283,56 @@ def test_trainings_ahead_in_parallel_give_the_same_record(smoke_home, tmp_path):
         for p in (tmp_path / "workers-2" / "checkpoints").glob("**/resume.safetensors")
     )
     assert len(folders) == 4, folders
+
+
+class _Renamed:
+    """A dataset seen under another id: whose preset names the closed loop's data."""
+
+    def __init__(self, dataset, did: str):
+        self._dataset, self.id = dataset, did
+
+    def __getattr__(self, name: str):
+        return getattr(self._dataset, name)
+
+
+@pytest.mark.parametrize(
+    ("did", "variant", "trained_on"),
+    [
+        ("hexa-climb-smoke-v6", "acc", "hexa-climb-smoke-noisy-v6"),
+        ("hexa-climb-smoke-v6", "next", "hexa-climb-smoke-noisy-v6"),
+        ("hexa-climb-paper-v6", "acc", None),  # paper's closed loop trains on its own data
+        ("hexa-climb-paper-v6", "next", "own"),  # ... and then judges the run's own model
+    ],
+)
+def test_the_closed_loop_declares_its_training_where_its_preset_says(
+    smoke_home, did, variant, trained_on
+):
+    from symbench.core.data import load_dataset
+    from symbench.core.data.presets import preset
+    from symbench.core.runs.evaluation import EvaluationContext
+    from symbench.core.runs.runner import TrainingJob, model_entry, planned_trainings
+
+    def refuse(*_):
+        raise AssertionError("planning only")
+
+    spec = RunSpec(model="sdnn", robot="hexa", preset="smoke", variant=variant)
+    dataset = _Renamed(load_dataset("hexa-climb-smoke-v6"), did)
+    context = EvaluationContext(
+        entry=model_entry(spec),
+        dataset=dataset,
+        preset=preset("smoke"),
+        split="iid",
+        seed=0,
+        predict=refuse,
+        test=None,
+        test_trajectories=np.array([], dtype=np.int64),
+        output_dir=smoke_home,
+        retrain=refuse,
+        retrain_on=refuse,
+    )
+    jobs = planned_trainings(context, ("torque-error", "closed-loop"))
+    own = TrainingJob(None, "iid", variant)
+    if trained_on == "own":
+        assert jobs == [own]  # one training per run
+    else:
+        assert jobs == [own, TrainingJob(trained_on, "iid", "next")]
