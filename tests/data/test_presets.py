@@ -179,11 +179,15 @@ def test_the_run_takes_its_budgets_from_the_preset(monkeypatch):
 
 @pytest.mark.parametrize(
     "protocol, budget, option",
-    [("converge", {"max_epochs": 2}, "--max-epochs"), ("paper", {"max_steps": 9}, "--max-steps")],
+    [
+        ("converge", {"max_epochs": 2}, "--max-epochs"),
+        ("cosine", {"max_epochs": 2}, "--max-epochs"),
+        ("paper", {"max_steps": 9}, "--max-steps"),
+    ],
 )
-def test_a_budget_of_the_other_protocol_is_refused(protocol, budget, option):
+def test_a_budget_of_another_protocol_is_refused(protocol, budget, option):
     spec = RunSpec(model="sdnn", robot="hexa", preset="smoke", protocol=protocol, **budget)
-    with pytest.raises(SymbenchError, match=f"{option} is a budget of the other protocol"):
+    with pytest.raises(SymbenchError, match=f"{option} is a budget of another protocol"):
         train_config(spec)
 
 

@@ -9,6 +9,7 @@ from model_sizes import BACKENDS, MODELS, SMALL
 from symbench.core.common.errors import SymbenchError
 from symbench.core.plugin import registry
 from symbench.core.training.loop import TrainConfig, batch_order, train
+from symbench.core.training.protocols import rate_scale
 from symbench.core.training.trained_model import TrainedModel
 
 
@@ -37,25 +38,37 @@ def test_validation_loss_falls(name, backend, smoke):
     assert np.isclose(err.mean(), val[model.best_epoch], rtol=1e-3)
 
 
+def _interrupted_after(monkeypatch, steps: int) -> None:
+    """The next training stops, as by Ctrl-C, when it reaches `steps` gradient steps."""
+    from symbench.core.training import loop
+
+    def scale(protocol, span, max_steps):
+        if span.start >= steps:
+            monkeypatch.undo()
+            raise KeyboardInterrupt
+        return rate_scale(protocol, span, max_steps)
+
+    monkeypatch.setattr(loop, "rate_scale", scale)
+
+
 @pytest.mark.parametrize("backend", BACKENDS)
-@pytest.mark.parametrize("protocol", ["converge", "paper"])
-def test_interrupted_training_resumes_exactly(backend, protocol, smoke, tmp_path):
-    """Under converge the checks fall every 3 steps of 4-batch epochs: a check, and so a
-    resume, in the middle of an epoch continues its batch order."""
+@pytest.mark.parametrize("protocol", ["converge", "cosine", "paper"])
+def test_interrupted_training_resumes_exactly(backend, protocol, smoke, tmp_path, monkeypatch):
+    """Under converge and cosine the checks fall every 3 steps of 4-batch epochs: a check,
+    and so a resume, in the middle of an epoch continues its batch order (and, under cosine,
+    its learning-rate curve)."""
     entry = registry.model("sdnn", backend)
     tr, va = (s["leg_grouped"].take(np.arange(256)) for s in smoke)
-    if protocol == "converge":
-        config, shorter = (converge(n, 3, hyper=SMALL["sdnn"]) for n in (4, 2))
+    if protocol != "paper":
+        config = converge(4, 3, hyper=SMALL["sdnn"], protocol=protocol)
     else:
-        config, shorter = (
-            TrainConfig(protocol="paper", max_epochs=n, hyper=SMALL["sdnn"], progress=False)
-            for n in (4, 2)
-        )
+        config = TrainConfig(protocol="paper", max_epochs=4, hyper=SMALL["sdnn"], progress=False)
     whole = train(entry, tr, va, config)
-    first = train(entry, tr, va, shorter, tmp_path)
-    assert len(first.history["val_loss"]) == 2
+    _interrupted_after(monkeypatch, 6 if protocol != "paper" else 8)
+    with pytest.raises(KeyboardInterrupt):
+        train(entry, tr, va, config, tmp_path)
     resumed = train(entry, tr, va, config, tmp_path)
-    assert resumed.steps == whole.steps == (12 if protocol == "converge" else 16)
+    assert resumed.steps == whole.steps == (12 if protocol != "paper" else 16)
     # torch repeats itself bit for bit; XLA's CPU kernels may round the last bit differently
     # for buffers that were reloaded, so allow float32 rounding
     assert resumed.best_epoch == whole.best_epoch
@@ -178,3 +191,24 @@ def test_bad_data_is_named(smoke):
     bad.inputs["x"][0, 0, 0] = np.nan
     with pytest.raises(SymbenchError, match="NaN"):
         train(entry, bad, va["leg_grouped"], TrainConfig(max_epochs=1, progress=False))
+
+
+def test_cosine_decays_the_rate_from_the_models_to_zero_over_the_budget():
+    np.testing.assert_array_equal(rate_scale("converge", range(0, 500), 1000), np.ones(500))
+    np.testing.assert_array_equal(rate_scale("paper", range(7, 9), 10), np.ones(2))
+    scale = rate_scale("cosine", range(0, 1000), 1000)
+    assert scale[0] == 1.0 and np.isclose(scale[500], 0.5) and 0 < scale[-1] < 1e-4
+    assert np.all(np.diff(scale) < 0)
+    # a round in the middle of the budget is that part of the same curve
+    np.testing.assert_array_equal(rate_scale("cosine", range(300, 400), 1000), scale[300:400])
+
+
+def test_cosine_trains_differently_and_refuses_to_resume_under_another_budget(smoke, tmp_path):
+    entry = registry.model("sdnn", "torch")
+    tr, va = (s["leg_grouped"].take(np.arange(256)) for s in smoke)
+    cosine = train(entry, tr, va, converge(2, 3, hyper=SMALL["sdnn"], protocol="cosine"), tmp_path)
+    constant = train(entry, tr, va, converge(2, 3, hyper=SMALL["sdnn"]))
+    assert cosine.history["train_loss"][0] != constant.history["train_loss"][0]
+    longer = converge(4, 3, hyper=SMALL["sdnn"], protocol="cosine")
+    with pytest.raises(SymbenchError, match="another model, data or configuration"):
+        train(entry, tr, va, longer, tmp_path)

@@ -98,9 +98,9 @@ class ScenarioGrid:
 class Training:
     """The training budgets of a run, per protocol (symbench.core.training.loop)."""
 
-    max_steps: int  # converge: gradient steps, for every model and fraction (`--max-steps`)
-    eval_every: int  # converge: gradient steps between validation checks
-    patience: int  # converge: checks without a better validation loss before it stops
+    max_steps: int  # converge, cosine: gradient steps, for every model and fraction
+    eval_every: int  # converge, cosine: gradient steps between validation checks
+    patience: int  # converge, cosine: checks without a better validation loss before it stops
     max_epochs: int  # paper: the epoch cap (its rule usually ends earlier; `--max-epochs`)
 
 

@@ -11,7 +11,7 @@ from symbench.core.training.protocols import PROTOCOLS
 
 
 def protocol_option(help_text: str) -> Callable[[Any], Any]:
-    """`--protocol converge|paper` (see symbench.core.training.loop), default converge."""
+    """`--protocol converge|cosine|paper` (see symbench.core.training.loop), default converge."""
     return click.option(
         "--protocol",
         type=click.Choice(PROTOCOLS),

@@ -140,7 +140,7 @@ class TrainingConfig(_Strict):
 class TrainingInfo(TrainingInfoV1):
     """`epochs`: full passes over the training data; `best_epoch`: the validation check of
     the kept parameters (an epoch under `paper`); `steps`: gradient steps; `stopped_by`:
-    patience or budget (converge), overfitting-rule or epoch-cap (paper). Records from
+    patience or budget (converge, cosine), overfitting-rule or epoch-cap (paper). Records from
     before these fields leave them out."""
 
     stopped_by: StoppedBy | None = None

@@ -113,13 +113,14 @@ from symbench.core.runs.runner import run as run_spec
 )
 @protocol_option(
     "Training protocol: converge (early stopping on validation loss within a budget of "
-    "gradient steps, the same for every model) or paper (the paper's overfitting rule)."
+    "gradient steps, the same for every model), cosine (the same, the learning rate "
+    "decayed to zero at the budget) or paper (the paper's overfitting rule)."
 )
 @click.option(
     "--max-steps",
     type=EPOCHS,
     default=None,
-    help="Override the preset's budget of gradient steps (converge).",
+    help="Override the preset's budget of gradient steps (converge, cosine).",
 )
 @click.option(
     "--max-epochs", type=EPOCHS, default=None, help="Override the preset's epoch cap (paper)."

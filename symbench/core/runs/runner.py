@@ -75,7 +75,7 @@ class RunSpec:
     workers: int = 2
     progress: bool = True
     protocol: str = "converge"  # the training protocol (symbench.core.training.loop)
-    max_steps: int | None = None  # None: the preset's budget (converge)
+    max_steps: int | None = None  # None: the preset's budget (converge, cosine)
     max_epochs: int | None = None  # None: the preset's cap (paper)
     parameters: int | None = None  # the model's widths scaled to this parameter count
     sizes: tuple[tuple[str, int], ...] = ()  # build keywords set by name (`--size`), last
@@ -203,15 +203,19 @@ def resolve_robot(robot: str | None, did: str) -> str:
 
 def train_config(spec: RunSpec) -> TrainConfig:
     """The run's training configuration: the protocol with the preset's budgets (checked:
-    seed, budgets, ...). A budget of the other protocol is refused, not ignored."""
+    seed, budgets, ...). A budget of another protocol is refused, not ignored."""
     from symbench.core.training.loop import TrainConfig
 
     budget = preset(spec.preset).training
-    other = {"converge": ("max_epochs", "--max-epochs"), "paper": ("max_steps", "--max-steps")}
+    other = {
+        "converge": ("max_epochs", "--max-epochs"),
+        "cosine": ("max_epochs", "--max-epochs"),
+        "paper": ("max_steps", "--max-steps"),
+    }
     if spec.protocol in other and getattr(spec, other[spec.protocol][0]) is not None:
         raise SymbenchError(
-            f"{other[spec.protocol][1]} is a budget of the other protocol, not of "
-            f"'{spec.protocol}' (converge: --max-steps; paper: --max-epochs)"
+            f"{other[spec.protocol][1]} is a budget of another protocol, not of "
+            f"'{spec.protocol}' (converge, cosine: --max-steps; paper: --max-epochs)"
         )
     hyper = {**(matched_size(spec) if spec.parameters is not None else {}), **dict(spec.sizes)}
     return TrainConfig(
@@ -259,7 +263,7 @@ def budget_text(config: TrainConfig) -> str:
     if config.protocol == "paper":
         return f"paper protocol, at most {config.max_epochs} epochs"
     return (
-        f"converge protocol, at most {config.max_steps} steps, patience "
+        f"{config.protocol} protocol, at most {config.max_steps} steps, patience "
         f"{config.patience} x {config.eval_every} steps"
     )
 

@@ -24,6 +24,7 @@ from symbench.core.data.provenance import git_commit
 from symbench.core.plugin.entries import ModelEntry
 from symbench.core.runs.runner import RunSpec, ensure_dataset, model_entry, train_config
 from symbench.core.training.checkpoints import write_json
+from symbench.core.training.protocols import STEP_BUDGET
 from symbench.core.training.sizes import scaled_widths
 
 DEFAULT_RATE_FACTORS = (1 / 3, 1.0, 3.0)  # around the model's own learning rate
@@ -149,7 +150,7 @@ def _summary(spec: RunSpec, dataset: Any, base: Any, study: Any, grid: list) -> 
         "seed": spec.seed,
         "protocol": base.protocol,
         "budgets": {k: getattr(base, k) for k in ("max_steps", "eval_every", "patience")}
-        if base.protocol == "converge"
+        if base.protocol in STEP_BUDGET
         else {"max_epochs": base.max_epochs},
         "scored_by": "best validation loss (normalized MSE, validation trajectories carved "
         "from the training side; test trajectories never used)",

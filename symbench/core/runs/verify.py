@@ -27,6 +27,7 @@ from symbench.core.data.presets import parse_dataset_id
 from symbench.core.data.standard import standard_hash
 from symbench.core.runs.results import ResultRecord, read_record
 from symbench.core.runs.runner import RunSpec, ensure_dataset, run
+from symbench.core.training.protocols import STEP_BUDGET
 
 RTOL = 1e-6
 ATOL = 1e-12
@@ -130,7 +131,7 @@ def replay_spec(record: ResultRecord, output: Path, workers: int) -> RunSpec:
         workers=workers,
         progress=False,
         protocol=config.protocol,
-        max_steps=config.max_steps if config.protocol == "converge" else None,
+        max_steps=config.max_steps if config.protocol in STEP_BUDGET else None,
         max_epochs=config.max_epochs if config.protocol == "paper" else None,
         train_config={
             "batch_size": config.batch_size,

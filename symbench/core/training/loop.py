@@ -1,13 +1,17 @@
 """The training protocols, the same for every model and backend (docs/concepts.md, Training).
 
-Both: Adam, batch 64, the model's learning rate, MSE on normalized targets, validation on
-trajectories held out of the training side, and the parameters with the best validation
-loss kept. They differ in when training stops:
+All three: Adam, batch 64, the model's learning rate, MSE on normalized targets, validation
+on trajectories held out of the training side, and the parameters with the best validation
+loss kept. They differ in when training stops and in how the learning rate moves:
 
 - `converge` (the default): a budget of `max_steps` gradient steps, the same for every model
   and every training fraction; the validation loss is checked every `eval_every` steps, and
   training stops early when it has not improved for `patience` checks in a row. Every model
   thus trains until it stops improving on data like its training data, or up to the budget.
+- `cosine`: `converge` with the learning rate decayed along a half cosine from the model's
+  rate to zero over the budget (`protocols.rate_scale`): at a constant rate a model hovers
+  at a noise floor its rate sets (hexa `small`, 10 000 steps: sdnn's validation loss 7
+  times lower with cosine, ffnn's 7 % lower; docs/concepts.md, Training).
 - `paper`: the paper's rule, one check per epoch; stop when `stop_ratio` x validation loss
   exceeds the training loss `stop_patience` epochs in a row, or at `max_epochs`. It stops any
   model whose validation data is harder than its training data (what a model that lacks the
@@ -46,7 +50,7 @@ from symbench.core.plugin.entries import ModelEntry
 from symbench.core.training import resume
 from symbench.core.training.backends import get_backend
 from symbench.core.training.normalization import Normalizer
-from symbench.core.training.protocols import PROTOCOLS
+from symbench.core.training.protocols import PROTOCOLS, STEP_BUDGET, rate_scale
 from symbench.core.training.trained_model import TrainedModel
 
 
@@ -55,9 +59,9 @@ class TrainConfig:
     seed: int = 0
     batch_size: int = 64
     protocol: str = "converge"
-    max_steps: int = 10000  # converge: the budget in gradient steps
-    eval_every: int = 500  # converge: steps between validation checks
-    patience: int = 6  # converge: checks without improvement before stopping
+    max_steps: int = 10000  # converge, cosine: the budget in gradient steps
+    eval_every: int = 500  # converge, cosine: steps between validation checks
+    patience: int = 6  # converge, cosine: checks without improvement before stopping
     max_epochs: int = 200  # paper: the epoch cap
     stop_ratio: float = 0.7  # paper
     stop_patience: int = 5  # paper
@@ -195,7 +199,10 @@ def train(
         )
         while not state.stopped:
             batches = round_batches(len(train), config, state)
-            train_loss = trainer.train_epoch(batches)
+            steps = range(state.steps, state.steps + len(batches))
+            train_loss = trainer.train_epoch(
+                batches, rate_scale(config.protocol, steps, config.max_steps)
+            )
             val_loss = trainer.val_loss()
             if not (math.isfinite(train_loss) and math.isfinite(val_loss)):
                 raise SymbenchError(
@@ -227,7 +234,7 @@ def _strikes(
 ) -> int:
     """Checks in a row that count towards stopping: without improvement (`converge`), or
     with `stop_ratio` x validation loss above the training loss (`paper`)."""
-    if config.protocol == "converge":
+    if config.protocol in STEP_BUDGET:
         strike = not improved
     else:
         strike = config.stop_ratio * val_loss > train_loss
@@ -236,7 +243,7 @@ def _strikes(
 
 def _stop_reason(state: _Progress, config: TrainConfig) -> tuple[str, str]:
     """(a protocols.StoppedBy, a sentence) once the protocol says stop, else ("", "")."""
-    if config.protocol == "converge":
+    if config.protocol in STEP_BUDGET:
         if state.strikes >= config.patience:
             return "patience", (
                 f"validation loss did not improve for {config.patience} checks "
@@ -257,7 +264,7 @@ def _stop_reason(state: _Progress, config: TrainConfig) -> tuple[str, str]:
 
 def _bar_total(config: TrainConfig, n_train: int) -> int:
     """The progress bar counts gradient steps, up to the budget or the epoch cap."""
-    if config.protocol == "converge":
+    if config.protocol in STEP_BUDGET:
         return config.max_steps
     return config.max_epochs * batches_per_epoch(n_train, config.batch_size)
 
@@ -286,7 +293,9 @@ def _identity(
 ) -> dict[str, Any]:
     """What a resume checkpoint must match: the same model, protocol and data (by content,
     so a regenerated dataset of the same size does not resume an old training)."""
-    budgets = ("max_epochs", "max_steps")  # a larger budget continues a finished run
+    # a larger budget continues a finished run, except under cosine, whose learning rate at
+    # every step depends on the budget
+    budgets = ("max_epochs",) if config.protocol == "cosine" else ("max_epochs", "max_steps")
     cfg = {k: v for k, v in config.to_dict().items() if k not in budgets}
     return {
         "model": entry.name,

@@ -9,6 +9,7 @@ from pathlib import Path
 from symbench.core.board.leaderboard import protocol_of
 from symbench.core.data.presets import PRESETS, dataset_id, parse_dataset_id
 from symbench.core.runs.results import RecordV1
+from symbench.core.training.protocols import STEP_BUDGET
 
 
 def run_command(record: RecordV1) -> str:
@@ -41,13 +42,13 @@ def _sizes(record: RecordV1) -> list[str]:
 
 
 def _budget(record: RecordV1) -> list[str]:
-    """--max-steps (converge) or --max-epochs (paper) when the run's budget was not the
+    """--max-steps (converge, cosine) or --max-epochs (paper) when the run's budget was not the
     preset's; schema-1 records kept no budget."""
     config = getattr(record.training, "config", None)
     if config is None or record.dataset.preset not in PRESETS:
         return []
     budget = PRESETS[record.dataset.preset].training
-    if config.protocol == "converge" and config.max_steps != budget.max_steps:
+    if config.protocol in STEP_BUDGET and config.max_steps != budget.max_steps:
         return ["--max-steps", str(config.max_steps)]
     if config.protocol == "paper" and config.max_epochs != budget.max_epochs:
         return ["--max-epochs", str(config.max_epochs)]

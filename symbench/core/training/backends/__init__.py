@@ -31,8 +31,9 @@ class Trainer(Protocol):
         val_inputs: dict[str, np.ndarray],
         val_target: np.ndarray,
     ) -> None: ...
-    def train_epoch(self, order: np.ndarray) -> float:
-        """One pass over the (n_batches, batch_size) sample indices; the mean batch loss."""
+    def train_epoch(self, order: np.ndarray, rate_scale: np.ndarray | None = None) -> float:
+        """One pass over the (n_batches, batch_size) sample indices, step i at the learning
+        rate times `rate_scale[i]` (None: times 1); the mean batch loss."""
 
     def val_loss(self) -> float: ...
     def params(self) -> Params: ...

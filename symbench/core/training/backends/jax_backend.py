@@ -100,22 +100,25 @@ class JaxTrainer:
         compiled: bool,
     ):
         self.to_tree = to_tree
-        self.tx = optax.adam(learning_rate)
+        self.tx = optax.adam(learning_rate)  # each step's update then times its rate scale
         tree = to_tree(params)
         self.state = (tree, self.tx.init(tree))
 
         def loss_fn(p, inputs, target):
             return jnp.mean((net.apply({"params": p}, **inputs) - target) ** 2)
 
-        def step(state, idx, inputs, target):
-            p, opt_state = state
+        def step(state, idx_scale, inputs, target):
+            (p, opt_state), (idx, scale) = state, idx_scale
             batch = {k: v[idx] for k, v in inputs.items()}
             loss, grads = jax.value_and_grad(loss_fn)(p, batch, target[idx])
             updates, opt_state = self.tx.update(grads, opt_state, p)
+            updates = jax.tree_util.tree_map(lambda u: u * scale, updates)
             return (optax.apply_updates(p, updates), opt_state), loss
 
-        def epoch(state, inputs, target, order):
-            state, losses = jax.lax.scan(lambda s, i: step(s, i, inputs, target), state, order)
+        def epoch(state, inputs, target, order, scales):
+            state, losses = jax.lax.scan(
+                lambda s, i: step(s, i, inputs, target), state, (order, scales)
+            )
             return state, losses.mean()
 
         def sse(p, inputs, target, idx, weight):
@@ -133,13 +136,15 @@ class JaxTrainer:
         self.train = (arrays(train_inputs), jnp.asarray(train_target, jnp.float32))
         self.val = (arrays(val_inputs), jnp.asarray(val_target, jnp.float32))
 
-    def train_epoch(self, order: np.ndarray) -> float:
+    def train_epoch(self, order: np.ndarray, rate_scale: np.ndarray | None = None) -> float:
+        ones = np.ones(len(order), np.float32)
+        scales = jnp.asarray(ones if rate_scale is None else rate_scale, jnp.float32)
         if self._epoch is not None:
-            self.state, loss = self._epoch(self.state, *self.train, jnp.asarray(order))
+            self.state, loss = self._epoch(self.state, *self.train, jnp.asarray(order), scales)
             return float(loss)
         losses = []
-        for idx in order:
-            self.state, loss = self._step(self.state, jnp.asarray(idx), *self.train)
+        for idx, scale in zip(order, scales, strict=True):
+            self.state, loss = self._step(self.state, (jnp.asarray(idx), scale), *self.train)
             losses.append(loss)
         return float(jnp.mean(jnp.stack(losses)))
 

@@ -113,6 +113,7 @@ class TorchTrainer:
         self.entry, self.dims, self.net = entry, dims, net
         # fused: one kernel per step instead of a loop over parameters (sdnn: +5-10% samples/s)
         self.opt = torch.optim.Adam(net.parameters(), lr=learning_rate, fused=True)
+        self.learning_rate = learning_rate
         self.forward = torch.compile(net) if compiled else net
 
     def set_data(self, train_inputs, train_target, val_inputs, val_target) -> None:
@@ -123,10 +124,13 @@ class TorchTrainer:
         self.train_target = torch.from_numpy(np.asarray(train_target, np.float32))
         self.val_target = torch.from_numpy(np.asarray(val_target, np.float32))
 
-    def train_epoch(self, order: np.ndarray) -> float:
+    def train_epoch(self, order: np.ndarray, rate_scale: np.ndarray | None = None) -> float:
         self.net.train()
         total = torch.zeros(())
-        for idx in torch.from_numpy(order):
+        scales = np.ones(len(order)) if rate_scale is None else rate_scale
+        for idx, scale in zip(torch.from_numpy(order), scales, strict=True):
+            for group in self.opt.param_groups:
+                group["lr"] = self.learning_rate * float(scale)
             batch = {k: v[idx] for k, v in self.train_inputs.items()}
             out = self.forward(**batch)
             # before the loss, which would broadcast (N, legs, 1) against (N, legs, 3) silently
