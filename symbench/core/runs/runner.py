@@ -475,24 +475,37 @@ def _not_while_planning(*_: object) -> Any:
     raise SymbenchError("an evaluator's trainings() may declare trainings, not run them")
 
 
-def declared_datasets(spec: RunSpec, dataset) -> list[str]:
-    """The other datasets the run's evaluators declare trainings on (the closed loop's noisy
-    variant), so that a sweep makes each once before runs that need it start side by side."""
-    entry = model_entry(spec)
-    parts = dataset.split_indices(spec.split, spec.seed)
-    context = EvaluationContext(
-        entry=entry,
+def evaluation_context(
+    spec: RunSpec,
+    dataset: Any,
+    test: Any,
+    predict: Callable[[Any], Any],
+    retrain: Callable[[str, str], TrainedOnSplit],
+    retrain_on: Callable[[str, str, str], TrainedOnSplit],
+) -> EvaluationContext:
+    """What the run's evaluators see: its model, preset, split and seed on `dataset`."""
+    return EvaluationContext(
+        entry=model_entry(spec),
         dataset=dataset,
         preset=preset(spec.preset),
         split=spec.split,
         seed=spec.seed,
-        predict=_not_while_planning,
-        test=dataset.split_views(entry.view, entry.variant, spec.split, spec.seed)[2],
-        test_trajectories=parts.test,
+        predict=predict,
+        test=test,
+        test_trajectories=dataset.split_indices(spec.split, spec.seed).test,
         output_dir=spec.output,
-        retrain=_not_while_planning,
-        retrain_on=_not_while_planning,
+        retrain=retrain,
+        retrain_on=retrain_on,
     )
+
+
+def declared_datasets(spec: RunSpec, dataset) -> list[str]:
+    """The other datasets the run's evaluators declare trainings on (the closed loop's noisy
+    variant), so that a sweep makes each once before runs that need it start side by side."""
+    entry = model_entry(spec)
+    test = dataset.split_views(entry.view, entry.variant, spec.split, spec.seed)[2]
+    planning = _not_while_planning
+    context = evaluation_context(spec, dataset, test, planning, planning, planning)
     jobs = planned_trainings(context, spec.evaluators)
     return [job.dataset for job in jobs if job.dataset is not None]
 
@@ -540,18 +553,8 @@ def run(spec: RunSpec, on_stage: Callable[[str], None] = lambda stage: None) -> 
         other, _, sets = timer.measure("retraining_s", fit, spec, dataset, job)
         return TrainedOnSplit(split, variant, other.predict, sets[2])
 
-    context = EvaluationContext(
-        entry=entry,
-        dataset=dataset,
-        preset=preset(spec.preset),
-        split=spec.split,
-        seed=spec.seed,
-        predict=lambda inputs: trained[0].predict(inputs),
-        test=test_set,
-        test_trajectories=parts.test,
-        output_dir=spec.output,
-        retrain=retrain,
-        retrain_on=retrain_on,
+    context = evaluation_context(
+        spec, dataset, test_set, lambda inputs: trained[0].predict(inputs), retrain, retrain_on
     )
     jobs = planned_trainings(context, spec.evaluators)
     ahead: dict[TrainingJob, float] = {}
