@@ -51,6 +51,7 @@ from symbench.core.runs.results import (
     run_key,
     write_record,
 )
+from symbench.core.training.protocols import PROTOCOLS, STEP_BUDGET
 
 if TYPE_CHECKING:
     from symbench.core.training.loop import TrainConfig
@@ -207,14 +208,11 @@ def train_config(spec: RunSpec) -> TrainConfig:
     from symbench.core.training.loop import TrainConfig
 
     budget = preset(spec.preset).training
-    other = {
-        "converge": ("max_epochs", "--max-epochs"),
-        "cosine": ("max_epochs", "--max-epochs"),
-        "paper": ("max_steps", "--max-steps"),
-    }
-    if spec.protocol in other and getattr(spec, other[spec.protocol][0]) is not None:
+    steps = spec.protocol in STEP_BUDGET
+    field, option = ("max_epochs", "--max-epochs") if steps else ("max_steps", "--max-steps")
+    if spec.protocol in PROTOCOLS and getattr(spec, field) is not None:
         raise SymbenchError(
-            f"{other[spec.protocol][1]} is a budget of another protocol, not of "
+            f"{option} is a budget of another protocol, not of "
             f"'{spec.protocol}' (converge, cosine: --max-steps; paper: --max-epochs)"
         )
     hyper = {**(matched_size(spec) if spec.parameters is not None else {}), **dict(spec.sizes)}
