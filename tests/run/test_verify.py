@@ -48,13 +48,18 @@ def records(smoke_home, tmp_path_factory) -> list[Path]:
     return [spec.record_path for spec in specs]
 
 
-def edited(path: Path, folder: Path) -> Path:
-    """A copy of the record with its RMSE raised by 1 %, sealed again (a seal is no signature)."""
+def resealed(path: Path, folder: Path, change) -> Path:
+    """A copy of the record with `change` applied to its torque-error metrics, sealed again."""
     data = json.loads(path.read_text())
-    data["metrics"]["torque-error"]["rmse"] *= 1.01
+    change(data["metrics"]["torque-error"])
     copy = folder / path.name
     write_record(data, copy)
     return copy
+
+
+def edited(path: Path, folder: Path) -> Path:
+    """A copy of the record with its RMSE raised by 1 % (a seal is no signature)."""
+    return resealed(path, folder, lambda m: m.update(rmse=m["rmse"] * 1.01))
 
 
 def verify(*args: str):
@@ -85,6 +90,29 @@ def test_an_edited_and_resealed_metric_is_named(records, tmp_path):
     text = verify(str(path))
     assert text.exit_code == 1
     assert "1 of 6 values disagree: torque-error.rmse" in " ".join(text.stdout.split())
+
+
+def test_a_metric_added_since_the_record_is_listed_not_failed(records, tmp_path):
+    """A record made before an evaluator gained a value still verifies: the new value is
+    shown as not recorded; every value the record has is still compared."""
+    name = sorted(read_record(records[0]).metrics["torque-error"])[0]
+    path = resealed(records[0], tmp_path, lambda m: m.pop(name))
+    result = verify(str(path), "--json")
+    assert result.exit_code == 0, result.output
+    [report] = json.loads(result.stdout)
+    [new] = [c for c in report["metrics"] if not c["recorded_here"]]
+    assert new["name"] == f"torque-error.{name}" and new["recorded"] is None
+    text = " ".join(verify(str(path)).stdout.split())
+    assert "all 5 values agree; 1 values reported today are not in the record" in text
+    assert f"torque-error.{name}" in text
+
+
+def test_a_recorded_metric_the_re_run_lacks_disagrees(records, tmp_path):
+    path = resealed(records[0], tmp_path, lambda m: m.update(invented=0.5))
+    result = verify(str(path), "--json")
+    assert result.exit_code == 1
+    [report] = json.loads(result.stdout)
+    assert [c["name"] for c in report["metrics"] if not c["agree"]] == ["torque-error.invented"]
 
 
 def test_tolerance_is_relative_plus_absolute():

@@ -74,7 +74,7 @@ def verify_sample(paths: Sequence[Path], n: int, seed: int, report: Callable[[st
             result = verify_record(path, Path(workdir))
             if not result.agree:
                 raise SymbenchError(first_problem(result))
-            report(f"{path}: all {len(result.checks)} values reproduce ({result.seconds:.0f} s)")
+            report(f"{path}: all {result.n_recorded} values reproduce ({result.seconds:.0f} s)")
 
 
 def swap_in(board: Path, build: Callable[[Path], list[Path]]) -> list[Path]:

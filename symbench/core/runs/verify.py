@@ -10,7 +10,9 @@ tolerance (relative 1e-6, absolute 1e-12) only leaves room for reduction-order n
 for another model. Where those kernels cannot be held (no AVX2, torch imported before
 symbench, another thread count; the command warns) float32 training changes in its last
 bits and the metrics with it: pass a looser tolerance there, and say so. Numbers and booleans
-are compared; text (file paths, failure descriptions) is not.
+are compared; text (file paths, failure descriptions) is not. A value the record lacks but
+today's evaluator reports (a metric added since the record was made) is listed as not
+recorded and does not fail the check; a recorded value that the re-run lacks does.
 """
 
 from __future__ import annotations
@@ -57,6 +59,7 @@ class MetricCheck:
     recorded: Any
     reproduced: Any
     agree: bool
+    recorded_here: bool = True  # False: only the re-run has it (added since); not compared
 
 
 @dataclass(frozen=True)
@@ -73,6 +76,15 @@ class Verification:
 
     def disagreements(self) -> list[str]:
         return [c.name for c in self.checks if not c.agree]
+
+    @property
+    def n_recorded(self) -> int:
+        """How many of the record's own values were compared."""
+        return sum(c.recorded_here for c in self.checks)
+
+    def not_recorded(self) -> list[str]:
+        """Values today's evaluators report that the record does not have."""
+        return [c.name for c in self.checks if not c.recorded_here]
 
     def to_dict(self) -> dict[str, Any]:
         return {
@@ -103,15 +115,15 @@ def leaves(metrics: Any, prefix: str = "") -> dict[str, Any]:
 
 
 def compare(recorded: dict, reproduced: dict, tolerance: Tolerance) -> tuple[MetricCheck, ...]:
-    """Every value of either side; one missing on a side disagrees."""
+    """Every value of either side: a recorded one must be reproduced within `tolerance` (one
+    the re-run lacks disagrees); one only the re-run has is listed as not recorded."""
     old, new = leaves(recorded), leaves(reproduced)
-    names = list(old) + [n for n in new if n not in old]
-    return tuple(
-        MetricCheck(
-            n, old.get(n), new.get(n), n in old and n in new and tolerance.agree(old[n], new[n])
-        )
-        for n in names
-    )
+    checks = [
+        MetricCheck(n, old[n], new.get(n), n in new and tolerance.agree(old[n], new[n]))
+        for n in old
+    ]
+    checks += [MetricCheck(n, None, new[n], True, False) for n in new if n not in old]
+    return tuple(checks)
 
 
 def replay_spec(record: ResultRecord, output: Path, workers: int) -> RunSpec:

@@ -19,8 +19,9 @@ def _table(result: Verification) -> Table:
     for column in ("metric", "recorded", "reproduced", "agree"):
         table.add_column(column, overflow="fold")
     for c in result.checks:
+        agree = "not recorded" if not c.recorded_here else "yes" if c.agree else "[red]NO[/]"
         table.add_row(
-            c.name, repr(c.recorded), repr(c.reproduced), "yes" if c.agree else "[red]NO[/]"
+            c.name, "-" if not c.recorded_here else repr(c.recorded), repr(c.reproduced), agree
         )
     return table
 
@@ -67,13 +68,20 @@ def verify(
         console.print(f"agreement: {tolerance} (numbers and booleans; text is not compared)")
         for result in results:
             console.print(_table(result))
-            bad = result.disagreements()
+            bad, new = result.disagreements(), result.not_recorded()
+            n = result.n_recorded
             console.print(
                 f"{result.path}: "
                 + (
-                    f"{len(bad)} of {len(result.checks)} values disagree: {', '.join(bad)}"
+                    f"{len(bad)} of {n} values disagree: {', '.join(bad)}"
                     if bad
-                    else f"all {len(result.checks)} values agree"
+                    else f"all {n} values agree"
+                )
+                + (
+                    f"; {len(new)} values reported today are not in the record (added since it "
+                    f"was made, not compared): {', '.join(new)}"
+                    if new
+                    else ""
                 ),
                 soft_wrap=True,
             )
