@@ -37,7 +37,9 @@ BUDGETS = {
         "grid_seconds": 2.6,
     },
     "paper": {
-        "training": Training(max_steps=200000, eval_every=5000, patience=4, max_epochs=500),
+        "training": Training(
+            max_steps=200000, eval_every=5000, patience=4, max_epochs=500, val_stride=4
+        ),
         "horizon_s": 10.0,
         "references": 8,
         "grid_seconds": 10.0,
@@ -127,6 +129,7 @@ def test_presets_json_is_every_preset_with_every_number():
         "eval_every": 5000,
         "patience": 4,
         "max_epochs": 500,
+        "val_stride": 4,
     }
     assert shown["smoke"]["closed_loop"] == {
         "seconds": 1.0,
@@ -171,6 +174,9 @@ def test_the_run_takes_its_budgets_from_the_preset(monkeypatch):
     with_preset(monkeypatch, "smoke", training=Training(700, 70, 3, max_epochs=7))
     config = train_config(spec)
     assert (config.max_steps, config.eval_every, config.patience) == (700, 70, 3)
+    assert config.val_stride == 1
+    with_preset(monkeypatch, "smoke", training=Training(700, 70, 3, max_epochs=7, val_stride=4))
+    assert train_config(spec).val_stride == 4
     assert train_config(dataclasses.replace(spec, max_steps=140)).max_steps == 140  # --max-steps
     paper = dataclasses.replace(spec, protocol="paper")
     assert train_config(paper).max_epochs == 7

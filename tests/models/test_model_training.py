@@ -150,6 +150,24 @@ def test_converge_gives_every_training_fraction_the_same_budget(smoke):
     assert full.stopped_by == half.stopped_by == "budget"
 
 
+def test_val_stride_checks_every_nth_validation_row_and_leaves_older_configs_alone(smoke):
+    """Stride 2 selects on exactly the rows a stride-1 training given every second row sees;
+    at stride 1 the config (kept in checkpoints) is what it was before the option existed."""
+    entry = registry.model("ffnn", "torch")
+    tr, va = (s["vector"] for s in smoke)
+    thinned = train(entry, tr, va, converge(2, 16, hyper=SMALL["ffnn"], val_stride=2))
+    given = train(
+        entry, tr, va.take(np.arange(0, len(va), 2)), converge(2, 16, hyper=SMALL["ffnn"])
+    )
+    full = train(entry, tr, va, converge(2, 16, hyper=SMALL["ffnn"]))
+    assert thinned.history["val_loss"] == given.history["val_loss"]
+    assert thinned.history["val_loss"] != full.history["val_loss"]
+    assert thinned.history["train_loss"] == full.history["train_loss"]
+    assert "val_stride" not in full.config and thinned.config["val_stride"] == 2
+    with pytest.raises(SymbenchError, match="val_stride must be at least 1"):
+        TrainConfig(val_stride=0)
+
+
 def test_an_unknown_protocol_is_refused():
     with pytest.raises(SymbenchError, match="unknown training protocol 'fast'"):
         TrainConfig(protocol="fast")

@@ -190,6 +190,7 @@ def test_a_record_carries_what_it_takes_to_rerun_it(smoke_home, tmp_path):
         "max_steps": 20,
         "eval_every": 10,
         "patience": 2,
+        "val_stride": 1,
         "max_epochs": 3,
         "stop_ratio": 0.7,
         "stop_patience": 5,

@@ -123,3 +123,24 @@ def test_a_sweep_makes_the_data_its_evaluators_train_on_before_any_run(
     seen.clear()
     sweep(controlled, report=lambda message: None)
     assert seen == [True, True]
+
+
+def test_a_sweeps_step_budget_reaches_every_run(smoke_home, tmp_path):
+    """`--max-steps` of a sweep is every run's budget, recorded; a sweep without it uses the
+    preset's."""
+    out = tmp_path / "results"
+    common = ["--robots", "hexa", "--seeds", "0", "--preset", "smoke"]
+    common += ["--evaluators", "torque-error", "--output", str(out)]
+    env = {**os.environ, "SYMBENCH_HOME": str(smoke_home)}
+    for model, budget in (("ffnn", ["--max-steps", "7"]), ("ffnn-leg", [])):
+        done = subprocess.run(
+            [SYMBENCH, "sweep", "--models", model, *common, *budget],
+            env=env,
+            capture_output=True,
+            text=True,
+        )
+        assert done.returncode == 0, done.stdout + done.stderr
+    records = {r.model.name: r for r in map(read_record, out.glob("*.json"))}
+    assert records["ffnn"].training.config.max_steps == 7
+    assert records["ffnn"].training.steps <= 7
+    assert records["ffnn-leg"].training.config.max_steps == 30  # smoke's budget

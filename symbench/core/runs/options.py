@@ -7,6 +7,7 @@ from typing import Any
 
 import click
 
+from symbench.core.common.cli_types import EPOCHS
 from symbench.core.training.protocols import PROTOCOLS
 
 
@@ -19,6 +20,28 @@ def protocol_option(help_text: str) -> Callable[[Any], Any]:
         show_default=True,
         help=help_text,
     )
+
+
+def budget_options(subject: str) -> Callable[[Any], Any]:
+    """`--max-steps` (converge, cosine) and `--max-epochs` (paper): override the preset's
+    training budget of `subject` ("the run", "every run")."""
+
+    def decorate(command: Any) -> Any:
+        steps = click.option(
+            "--max-steps",
+            type=EPOCHS,
+            default=None,
+            help=f"Override the preset's budget of gradient steps of {subject} (converge, cosine).",
+        )
+        epochs = click.option(
+            "--max-epochs",
+            type=EPOCHS,
+            default=None,
+            help=f"Override the preset's epoch cap of {subject} (paper).",
+        )
+        return steps(epochs(command))
+
+    return decorate
 
 
 def size_option(help_text: str) -> Callable[[Any], Any]:

@@ -129,6 +129,7 @@ class TrainingConfig(_Strict):
     max_steps: int | None = Field(default=None, ge=1)
     eval_every: int | None = Field(default=None, ge=1)
     patience: int | None = Field(default=None, ge=1)
+    val_stride: int = Field(default=1, ge=1, description="validation rows: every n-th")
     max_epochs: int = Field(ge=1)
     stop_ratio: float
     stop_patience: int = Field(ge=1)

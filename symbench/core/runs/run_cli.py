@@ -18,7 +18,7 @@ from symbench.core.common.cli_types import EPOCHS, SEED, WORKERS, CommaList, Wri
 from symbench.core.common.console import StdoutConsole
 from symbench.core.data.cli import split_option
 from symbench.core.data.presets import PRESETS
-from symbench.core.runs.options import protocol_option, size_option, sizes_from
+from symbench.core.runs.options import budget_options, protocol_option, size_option, sizes_from
 from symbench.core.runs.results import ResultRecord
 from symbench.core.runs.runner import (
     DEFAULT_EVALUATORS,
@@ -116,15 +116,7 @@ from symbench.core.runs.runner import run as run_spec
     "gradient steps, the same for every model), cosine (the same, the learning rate "
     "decayed to zero at the budget) or paper (the paper's overfitting rule)."
 )
-@click.option(
-    "--max-steps",
-    type=EPOCHS,
-    default=None,
-    help="Override the preset's budget of gradient steps (converge, cosine).",
-)
-@click.option(
-    "--max-epochs", type=EPOCHS, default=None, help="Override the preset's epoch cap (paper)."
-)
+@budget_options("the run")
 @click.option(
     "--parameters",
     type=EPOCHS,

@@ -220,6 +220,7 @@ def train_config(spec: RunSpec) -> TrainConfig:
         **{
             "eval_every": budget.eval_every,
             "patience": budget.patience,
+            "val_stride": budget.val_stride,
             **({"hyper": hyper} if hyper else {}),
             **spec.train_config,
             "seed": spec.seed,
@@ -290,6 +291,7 @@ def recorded_config(config: TrainConfig, entry: ModelEntry) -> dict[str, Any]:
     from symbench.core.training.backends import get_backend
 
     out = {k: v for k, v in config.to_dict().items() if k != "progress"}
+    out["val_stride"] = config.val_stride  # to_dict leaves it out at 1; records always say
     out["learning_rate"] = config.rate_for(entry)
     out["compile"] = (
         get_backend(entry.backend).default_compiled if config.compile is None else config.compile

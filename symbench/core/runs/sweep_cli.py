@@ -12,7 +12,7 @@ from pathlib import Path
 import click
 
 from symbench.core.common.cli_types import SEED, WORKERS, CommaList, WritableFolder
-from symbench.core.runs.options import protocol_option, size_option, sizes_from
+from symbench.core.runs.options import budget_options, protocol_option, size_option, sizes_from
 from symbench.core.runs.runner import DEFAULT_EVALUATORS, RunSpec, default_preset
 
 
@@ -75,6 +75,7 @@ from symbench.core.runs.runner import DEFAULT_EVALUATORS, RunSpec, default_prese
     "with a noisy preset, the closed-loop evaluator then judges the run's own model).",
 )
 @protocol_option("Training protocol of every run (see `symbench run`).")
+@budget_options("every run")
 @click.option(
     "--parameters",
     type=click.IntRange(min=1),
@@ -122,6 +123,8 @@ def sweep(
     preset: str | None,
     variant: str | None,
     protocol: str,
+    max_steps: int | None,
+    max_epochs: int | None,
     parameters: int | None,
     sizes: tuple[str, ...],
     evaluators: list[str],
@@ -149,6 +152,8 @@ def sweep(
         preset=preset or "small",
         variant=variant,
         protocol=protocol,
+        max_steps=max_steps,
+        max_epochs=max_epochs,
         parameters=parameters,
         sizes=tuple(sizes_from(sizes).items()),
         evaluators=tuple(evaluators),

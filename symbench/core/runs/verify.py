@@ -150,6 +150,7 @@ def replay_spec(record: ResultRecord, output: Path, workers: int) -> RunSpec:
             **{k: getattr(config, k) for k in ("eval_every", "patience") if getattr(config, k)},
             "stop_ratio": config.stop_ratio,
             "stop_patience": config.stop_patience,
+            "val_stride": config.val_stride,
             "learning_rate": config.learning_rate,
             "compile": config.compile,
             "hyper": dict(record.model.hyperparameters),
