@@ -71,6 +71,11 @@ class BadPlugin:
         return [
             EvaluatorEntry("pairs", evaluate=lambda context: [("rmse", 1.0)]),
             EvaluatorEntry("plans-badly", evaluate=lambda context: {}, trainings=_no_plan),
+            EvaluatorEntry(
+                "plans-from-samples",
+                evaluate=lambda context: {},
+                trainings=lambda context: [(None, "iid", context.test.variant)],
+            ),
         ]
 
     @hookimpl

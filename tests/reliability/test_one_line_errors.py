@@ -282,6 +282,19 @@ def test_an_evaluator_whose_declared_trainings_fail_is_named(smoke_hexa, tmp_pat
     assert message == "Error: evaluator 'plans-badly': trainings() failed: KeyError: 'split'"
 
 
+def test_an_evaluator_that_plans_from_test_samples_is_told_why_it_cannot(smoke_hexa, tmp_path):
+    """A sweep plans every run before any starts, without their samples (a `paper` view costs
+    tens of seconds); an evaluator that reads them while planning is told so."""
+    with bad_plugin_installed():
+        command = ["sweep", "--models", "ffnn", "--robots", "hexa", "--preset", "smoke"]
+        result = invoke(*command, "--evaluators", "plans-from-samples", "--output", tmp_path)
+    message = error_line(result, 1)
+    assert message.startswith(
+        "Error: evaluator 'plans-from-samples': trainings() runs while a sweep plans, before "
+        "the test samples are made"
+    )
+
+
 class Crashing:
     @hookimpl
     def symbench_commands(self, cli: click.Group) -> None:

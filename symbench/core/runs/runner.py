@@ -458,8 +458,8 @@ def planned_trainings(context: EvaluationContext, names: tuple[str, ...]) -> lis
             declared = [
                 (did, str(split), str(variant)) for did, split, variant in entry.trainings(context)
             ]
-        except SymbenchError:
-            raise
+        except SymbenchError as exc:
+            raise SymbenchError(f"evaluator '{name}': {exc}") from exc
         except Exception as exc:  # a plugin's bug, named before any minute is spent
             raise SymbenchError(
                 f"evaluator '{name}': trainings() failed: {type(exc).__name__}: {exc}"
@@ -472,7 +472,7 @@ def planned_trainings(context: EvaluationContext, names: tuple[str, ...]) -> lis
 
 
 def _not_while_planning(*_: object) -> Any:
-    raise SymbenchError("an evaluator's trainings() may declare trainings, not run them")
+    raise SymbenchError("trainings() may declare trainings, not run them")
 
 
 def evaluation_context(
@@ -499,12 +499,22 @@ def evaluation_context(
     )
 
 
+class _TestSamplesWhilePlanning:
+    """The context's `test` while a sweep plans: its samples are not made yet (building a
+    view of a `paper` dataset costs tens of seconds, once per run, not per planned run)."""
+
+    def __getattr__(self, name: str) -> Any:
+        raise SymbenchError(
+            "trainings() runs while a sweep plans, before the test samples are made: "
+            "declare trainings from the context's split, preset and dataset"
+        )
+
+
 def declared_datasets(spec: RunSpec, dataset) -> list[str]:
     """The other datasets the run's evaluators declare trainings on (the closed loop's noisy
     variant), so that a sweep makes each once before runs that need it start side by side."""
-    entry = model_entry(spec)
-    test = dataset.split_views(entry.view, entry.variant, spec.split, spec.seed)[2]
     planning = _not_while_planning
+    test = _TestSamplesWhilePlanning()
     context = evaluation_context(spec, dataset, test, planning, planning, planning)
     jobs = planned_trainings(context, spec.evaluators)
     return [job.dataset for job in jobs if job.dataset is not None]
