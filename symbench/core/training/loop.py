@@ -160,7 +160,8 @@ def train(
     climb 6 ms apart carry nearly the same error, so a large preset's checks thin them out
     instead of checking less often); resume from `checkpoint_dir` when it holds one."""
     dims = _check_data(entry, train, val)
-    val = val.take(np.arange(0, len(val), config.val_stride))
+    if config.val_stride > 1:  # stride 1: the rows as given, no copy
+        val = val.take(np.arange(0, len(val), config.val_stride))
     normalizer = Normalizer.fit(train)
     backend = get_backend(entry.backend)
     compiled = backend.default_compiled if config.compile is None else config.compile
