@@ -51,36 +51,38 @@ _PUBLIC: dict[str, str] = {
     "InvalidEntryError": "symbench.core.plugin.entries:InvalidEntryError",
     "Lazy": "symbench.core.common.lazy:Lazy",
     "SymbenchError": "symbench.core.common.errors:SymbenchError",
-    "ModelDims": "symbench.core.data.model_dims:ModelDims",
+    "ModelDims": "symbench.core.data.views.model_dims:ModelDims",
     "ViewArrays": "symbench.core.common.arrays:ViewArrays",
     "LegGroup": "symbench.core.symmetry.groups:LegGroup",
     "act": "symbench.core.symmetry.groups:act",
-    "schema": "symbench.core.data.schema",
+    "schema": "symbench.core.data.views.schema",
     "EvaluationContext": "symbench.core.runs.evaluation:EvaluationContext",
     "TrainedOnSplit": "symbench.core.runs.evaluation:TrainedOnSplit",
     "rmse": "symbench.core.runs.evaluation:rmse",
     "relative_error": "symbench.core.runs.evaluation:relative_error",
-    "act_on_raw": "symbench.core.data.raw_action:act_on_raw",
-    "rotate_scene_about_gravity": "symbench.core.data.raw_action:rotate_scene_about_gravity",
-    "rotate_scene": "symbench.core.data.raw_action:rotate_scene",
-    "Scenario": "symbench.core.sim.scenario:Scenario",
-    "simulate": "symbench.core.sim.rollout:simulate",
-    "track": "symbench.core.sim.learned_control:track",
-    "track_batch": "symbench.core.sim.learned_control:track_batch",
-    "TrackJob": "symbench.core.sim.learned_control:TrackJob",
+    "act_on_raw": "symbench.core.data.symmetry.raw_action:act_on_raw",
+    "rotate_scene_about_gravity": (
+        "symbench.core.data.symmetry.raw_action:rotate_scene_about_gravity"
+    ),
+    "rotate_scene": "symbench.core.data.symmetry.raw_action:rotate_scene",
+    "Scenario": "symbench.core.sim.scene.scenario:Scenario",
+    "simulate": "symbench.core.sim.climb.rollout:simulate",
+    "track": "symbench.core.sim.tracking.learned_control:track",
+    "track_batch": "symbench.core.sim.tracking.learned_control:track_batch",
+    "TrackJob": "symbench.core.sim.tracking.learned_control:TrackJob",
     "feedforward_policy": "symbench.core.runs.control_policy:feedforward_policy",
-    "held_out_scenarios": "symbench.core.sim.references:held_out_scenarios",
-    "reference_scenarios": "symbench.core.sim.references:reference_scenarios",
-    "oracle_policy": "symbench.core.sim.references:oracle_policy",
-    "model_jobs": "symbench.core.sim.references:model_jobs",
-    "build_view": "symbench.core.data.views:build_view",
-    "dataset_symmetry": "symbench.core.data.symmetry_report:dataset_symmetry",
+    "held_out_scenarios": "symbench.core.sim.tracking.references:held_out_scenarios",
+    "reference_scenarios": "symbench.core.sim.tracking.references:reference_scenarios",
+    "oracle_policy": "symbench.core.sim.tracking.references:oracle_policy",
+    "model_jobs": "symbench.core.sim.tracking.references:model_jobs",
+    "build_view": "symbench.core.data.views.transforms:build_view",
+    "dataset_symmetry": "symbench.core.data.symmetry.report:dataset_symmetry",
     "sample_efficiency_png": "symbench.core.board.plots:sample_efficiency_png",
     "SplitContext": "symbench.core.data.splits:SplitContext",
     "carve_validation": "symbench.core.data.splits:carve_validation",
-    "Preset": "symbench.core.data.presets:Preset",
-    "PRESETS": "symbench.core.data.presets:PRESETS",
-    "preset": "symbench.core.data.presets:preset",
+    "Preset": "symbench.core.config.presets:Preset",
+    "PRESETS": "symbench.core.config.presets:PRESETS",
+    "preset": "symbench.core.config.presets:preset",
     "model_entry": "symbench.core.plugin.registry:model",
     "load_robot": "symbench.core.robot.specs:load_robot",
     "TrainConfig": "symbench.core.training.loop:TrainConfig",
@@ -160,16 +162,16 @@ if TYPE_CHECKING:  # what type checkers and editors see
     from symbench.core.common.arrays import ViewArrays
     from symbench.core.common.errors import SymbenchError
     from symbench.core.common.lazy import Lazy
-    from symbench.core.data import schema
-    from symbench.core.data.model_dims import ModelDims
-    from symbench.core.data.presets import PRESETS, Preset, preset
-    from symbench.core.data.raw_action import (
+    from symbench.core.config.presets import PRESETS, Preset, preset
+    from symbench.core.data.splits import SplitContext, carve_validation
+    from symbench.core.data.symmetry.raw_action import (
         act_on_raw,
         rotate_scene,
         rotate_scene_about_gravity,
     )
-    from symbench.core.data.splits import SplitContext, carve_validation
-    from symbench.core.data.views import build_view
+    from symbench.core.data.views import schema
+    from symbench.core.data.views.model_dims import ModelDims
+    from symbench.core.data.views.transforms import build_view
     from symbench.core.plugin.entries import (
         BACKENDS,
         EVALUATOR_NEEDS,
@@ -190,13 +192,13 @@ if TYPE_CHECKING:  # what type checkers and editors see
         relative_error,
         rmse,
     )
-    from symbench.core.sim.learned_control import TrackJob, track, track_batch
-    from symbench.core.sim.references import (
+    from symbench.core.sim.climb.rollout import simulate
+    from symbench.core.sim.scene.scenario import Scenario
+    from symbench.core.sim.tracking.learned_control import TrackJob, track, track_batch
+    from symbench.core.sim.tracking.references import (
         held_out_scenarios,
         model_jobs,
         oracle_policy,
         reference_scenarios,
     )
-    from symbench.core.sim.rollout import simulate
-    from symbench.core.sim.scenario import Scenario
     from symbench.core.training.loop import TrainConfig, train

@@ -14,9 +14,9 @@ import pytest
 from hypothesis import HealthCheck, settings
 from synthetic_raw import fake_simulate
 
-from symbench.core.data.generation import generate
-from symbench.core.data.presets import dataset_id
-from symbench.core.data.provenance import hardware, library_versions
+from symbench.core.config.presets import dataset_id
+from symbench.core.config.provenance import hardware, library_versions
+from symbench.core.data.generation.generate import generate
 
 HASH = "ab" * 32
 DEFAULT_EXAMPLES = 50

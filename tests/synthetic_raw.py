@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 
 from symbench.core.common.errors import SymbenchError
-from symbench.core.sim.scenario import Scenario
+from symbench.core.sim.scene.scenario import Scenario
 
 RECORD_PERIOD = 0.006
 

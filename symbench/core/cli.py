@@ -31,17 +31,17 @@ from symbench.core.plugin.registry import KINDS, collect, names
 
 # name -> "module:attribute" of a click command, imported when first used.
 LAZY_COMMANDS: dict[str, str] = {
-    "run": "symbench.core.runs.run_cli:run",
+    "run": "symbench.core.runs.cli.run:run",
     "bench": "symbench.core.bench.cli:bench",
     "sim": "symbench.core.sim.cli:sim",
     "leaderboard": "symbench.core.board.cli:leaderboard",
     "publish": "symbench.core.board.cli:publish",
-    "sweep": "symbench.core.runs.sweep_cli:sweep",
-    "verify": "symbench.core.runs.verify_cli:verify",
-    "tune": "symbench.core.runs.tune_cli:tune",
+    "sweep": "symbench.core.runs.cli.sweep:sweep",
+    "verify": "symbench.core.runs.cli.verify:verify",
+    "tune": "symbench.core.runs.cli.tune:tune",
     "data": "symbench.core.data.cli:data",
-    "presets": "symbench.core.data.presets_cli:presets",
-    "check-equivariance": "symbench.testing.check_command:check_equivariance",
+    "presets": "symbench.core.config.cli:presets",
+    "check-equivariance": "symbench.testing.cli:check_equivariance",
 }
 
 stderr = Console(stderr=True)

@@ -31,10 +31,11 @@ from typing import Any
 import numpy as np
 
 from symbench.core.common.errors import SymbenchError
-from symbench.core.data import raw_action, schema
-from symbench.core.data.frames import LegFrames
-from symbench.core.data.model_dims import dims_for
-from symbench.core.data.views import build_view
+from symbench.core.data.symmetry import raw_action
+from symbench.core.data.views import schema
+from symbench.core.data.views.frames import LegFrames
+from symbench.core.data.views.model_dims import dims_for
+from symbench.core.data.views.transforms import build_view
 from symbench.core.plugin.entries import ModelEntry
 from symbench.core.runs.evaluation import relative_error
 from symbench.core.symmetry.groups import GroupElement, LegGroup

@@ -22,7 +22,7 @@ from typing import Any
 
 import numpy as np
 
-from symbench.core.data import raw_action
+from symbench.core.data.symmetry import raw_action
 from symbench.core.plugin.entries import ModelEntry
 from symbench.core.symmetry.groups import LegGroup
 from symbench.core.training.normalization import Normalizer

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from symbench.core.data.frames import LegFrames, quat_multiply, yaw_quat
+from symbench.core.data.views.frames import LegFrames, quat_multiply, yaw_quat
 
 RECORD_PERIOD = 0.006
 

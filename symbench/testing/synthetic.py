@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from symbench.core.common.arrays import ViewArrays
-from symbench.core.data import schema
+from symbench.core.data.views import schema
 
 TARGET_SEED = 20240531
 _HIDDEN = 16

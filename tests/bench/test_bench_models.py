@@ -10,7 +10,7 @@ from click.testing import CliRunner
 
 from symbench.core.bench.flops import step_flops_per_sample
 from symbench.core.cli import build_cli
-from symbench.core.data.model_dims import dims_for
+from symbench.core.data.views.model_dims import dims_for
 from symbench.core.plugin import registry
 from symbench.core.training.backends.torch_backend import build_network
 

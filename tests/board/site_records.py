@@ -17,7 +17,7 @@ import json
 from collections.abc import Callable
 from pathlib import Path
 
-from symbench.core.data.presets import dataset_id
+from symbench.core.config.presets import dataset_id
 from symbench.core.runs.results import write_record
 
 MODELS = {"sdnn": (0.10, 0.30), "gnn": (0.25, 0.20), "ffnn": (0.40, 0.10)}  # RMSE, NRMSE

@@ -24,7 +24,7 @@ from system_packages import ensure_osmesa
 from symbench.core.board.leaderboard import aggregate, load_records
 from symbench.core.board.site.clips import choose
 from symbench.core.board.site.names import GroupKey
-from symbench.core.data.presets import dataset_id
+from symbench.core.config.presets import dataset_id
 from symbench.core.runs.results import write_record
 
 HEXA = dataset_id("hexa", "smoke")
@@ -160,12 +160,12 @@ def test_the_clip_model_is_the_records(trained):
     """Loaded from its checkpoint, the closed loop's model tracks the evaluator's references
     exactly as it did in the run."""
     from symbench.core.board.site.clips import checkpoint_folder, closed_loop_model
+    from symbench.core.config.presets import preset
     from symbench.core.data.dataset import load_dataset
-    from symbench.core.data.presets import preset
     from symbench.core.runs.control_policy import feedforward_policy
-    from symbench.core.sim.learned_control import expert_reference, track_batch
-    from symbench.core.sim.references import model_jobs, reference_scenarios
-    from symbench.core.sim.scenario import Scenario
+    from symbench.core.sim.scene.scenario import Scenario
+    from symbench.core.sim.tracking.learned_control import expert_reference, track_batch
+    from symbench.core.sim.tracking.references import model_jobs, reference_scenarios
 
     budget = preset("smoke").closed_loop
     fractions = [float(f) for f in budget.pd_fractions]
@@ -196,7 +196,7 @@ def test_the_clip_model_is_the_records(trained):
 
 @pytest.mark.slow
 def test_clips_are_rendered_encoded_and_shown(trained, tmp_path):
-    from symbench.core.sim.render import frame_times
+    from symbench.core.sim.tracking.render import frame_times
 
     ensure_osmesa()
     done = _build(trained, tmp_path / "site")

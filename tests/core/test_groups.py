@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from symbench.core.common.errors import SymbenchError
-from symbench.core.data.schema import TARGET, leg_grouped_input
+from symbench.core.data.views.schema import TARGET, leg_grouped_input
 from symbench.core.symmetry import groups
 from symbench.core.symmetry.checks import axiom_violations, homomorphism_violations
 from symbench.core.symmetry.groups import GroupElement, LegGroup, act

@@ -8,7 +8,7 @@ import json
 import pytest
 
 from symbench.core.common.errors import SymbenchError
-from symbench.core.data.provenance import hardware, library_versions
+from symbench.core.config.provenance import hardware, library_versions
 from symbench.core.runs.results import read_display_record, read_record, seal_of, write_record
 
 

@@ -5,13 +5,13 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from symbench.core.data import schema
-from symbench.core.data.frames import LegFrames
-from symbench.core.data.raw_action import act_on_raw, rotate_scene_about_gravity
-from symbench.core.data.views import build_view
+from symbench.core.data.symmetry.raw_action import act_on_raw, rotate_scene_about_gravity
+from symbench.core.data.views import schema
+from symbench.core.data.views.frames import LegFrames
+from symbench.core.data.views.transforms import build_view
 from symbench.core.robot.specs import load_robot
-from symbench.core.sim import rollout as sim  # MuJoCo and dm-control: hard dependencies
-from symbench.core.sim.scenario import Scenario
+from symbench.core.sim.climb import rollout as sim
+from symbench.core.sim.scene.scenario import Scenario
 
 SECONDS = 0.3
 
@@ -94,8 +94,8 @@ def test_recorded_contact_and_magnet_flags_match_the_physics(robot, inclination)
     """Recomputed from MuJoCo's state by name and geometry, not through the recorder."""
     import mujoco
 
-    from symbench.core.sim.model import SURFACE, magnet_name, sole_name
-    from symbench.core.sim.setup import Climb
+    from symbench.core.sim.scene.mjcf import SURFACE, magnet_name, sole_name
+    from symbench.core.sim.scene.setup import Climb
 
     spec = load_robot(robot)
     scenario = Scenario(robot, inclination_deg=inclination, seconds=1.2)
@@ -145,7 +145,7 @@ def test_recorded_contact_and_magnet_flags_match_the_physics(robot, inclination)
 
 def test_generating_the_smoke_preset_twice_gives_the_same_hash(tmp_path, monkeypatch):
     """`symbench data generate --robot hexa --preset smoke`, twice, with 1 and 2 workers."""
-    from symbench.core.data.generation import generate
+    from symbench.core.data.generation.generate import generate
 
     reports = []
     for workers in (1, 2):
@@ -167,7 +167,7 @@ def test_ctrl_c_during_generation_keeps_finished_work_and_resumes(tmp_path):
     import time
     from pathlib import Path
 
-    from symbench.core.data.presets import dataset_id
+    from symbench.core.config.presets import dataset_id
 
     env = dict(os.environ, MUJOCO_GL="disable", SYMBENCH_HOME=str(tmp_path))
     command = [

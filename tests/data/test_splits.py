@@ -11,9 +11,9 @@ from synthetic_raw import fake_simulate
 
 from symbench import hookimpl
 from symbench.core.common.errors import SymbenchError
+from symbench.core.config.presets import preset
 from symbench.core.data import load_dataset
-from symbench.core.data.generation import generate
-from symbench.core.data.presets import preset
+from symbench.core.data.generation.generate import generate
 from symbench.core.data.splits import SplitContext
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import SplitEntry

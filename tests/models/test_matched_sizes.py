@@ -7,7 +7,7 @@ import dataclasses
 import pytest
 
 from symbench.core.common.errors import SymbenchError
-from symbench.core.data.model_dims import dims_for
+from symbench.core.data.views.model_dims import dims_for
 from symbench.core.plugin import registry
 from symbench.core.runs.runner import RunSpec, train_config
 from symbench.core.training import sizes

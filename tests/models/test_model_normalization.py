@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from symbench.core.data import schema
+from symbench.core.data.views import schema
 from symbench.core.training.normalization import Normalizer
 from symbench.testing.synthetic import synthetic_views
 

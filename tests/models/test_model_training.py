@@ -7,9 +7,9 @@ import pytest
 from model_sizes import BACKENDS, MODELS, SMALL
 
 from symbench.core.common.errors import SymbenchError
+from symbench.core.config.protocols import rate_scale
 from symbench.core.plugin import registry
 from symbench.core.training.loop import TrainConfig, batch_order, train
-from symbench.core.training.protocols import rate_scale
 from symbench.core.training.trained_model import TrainedModel
 
 

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from model_sizes import BACKENDS, MODELS, SMALL
 
-from symbench.core.data.model_dims import dims_for
+from symbench.core.data.views.model_dims import dims_for
 from symbench.core.plugin import registry
 from symbench.core.training.backends import get_backend
 

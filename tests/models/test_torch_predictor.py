@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import torch
 
-from symbench.core.data.model_dims import dims_of
+from symbench.core.data.views.model_dims import dims_of
 from symbench.core.plugin.entries import ModelEntry
 from symbench.core.training.backends import get_backend
 from symbench.core.training.normalization import Normalizer

@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 from strategies import JSON, edited
 
 from symbench.core.common.errors import SymbenchError
-from symbench.core.data.model_dims import dims_for
+from symbench.core.data.views.model_dims import dims_for
 from symbench.core.plugin import registry
 from symbench.core.training.backends import get_backend
 from symbench.core.training.checkpoints import read_tensors, write_tensors

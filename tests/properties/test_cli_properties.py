@@ -80,7 +80,7 @@ def test_run_values_are_refused_or_handed_on_in_range(values):
     with (
         tempfile.TemporaryDirectory() as scratch,
         contextlib.chdir(scratch),
-        stand_in("symbench.core.runs.run_cli:run_spec") as run,
+        stand_in("symbench.core.runs.cli.run:run_spec") as run,
     ):
         Path("blocker").write_text("a file, not a folder")
         result = invoke(

@@ -16,10 +16,10 @@ from strategies import FILE_BYTES, NASTY_TEXT, defective, edited
 from synthetic_raw import N_LEGS, synthetic_raw, write_logs
 
 from symbench.core.common.errors import SymbenchError
-from symbench.core.data.columns import flatten, unflatten
-from symbench.core.data.derive import DERIVABLE, derivative
-from symbench.core.data.importer import import_logs
-from symbench.core.data.storage import read_trajectory
+from symbench.core.data.importing.derive import DERIVABLE, derivative
+from symbench.core.data.importing.importer import import_logs
+from symbench.core.data.storage.columns import flatten, unflatten
+from symbench.core.data.storage.files import read_trajectory
 from symbench.core.robot.specs import load_robot
 from symbench.core.sim.raw import COLUMN_NAMES
 

@@ -18,9 +18,9 @@ from synthetic_raw import fake_simulate
 
 from symbench.core.common.errors import SymbenchError
 from symbench.core.data import load_dataset
-from symbench.core.data.generation import generate
-from symbench.core.data.metadata import METADATA, content_hash
-from symbench.core.data.storage import step_count
+from symbench.core.data.generation.generate import generate
+from symbench.core.data.storage.files import step_count
+from symbench.core.data.storage.metadata import METADATA, content_hash
 from symbench.core.plugin import registry
 
 DATASET = "hexa-climb-smoke-v6"

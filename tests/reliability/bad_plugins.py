@@ -9,7 +9,7 @@ from pathlib import Path
 from typing import Any
 
 from symbench import hookimpl
-from symbench.core.data.model_dims import ModelDims
+from symbench.core.data.views.model_dims import ModelDims
 from symbench.core.plugin.entries import EvaluatorEntry, ModelEntry, RobotEntry
 from symbench.core.plugin.host import PluginHost, set_host
 

@@ -13,10 +13,10 @@ from synthetic_raw import write_logs
 
 from symbench.core.common.errors import SymbenchError
 from symbench.core.data import load_dataset
-from symbench.core.data.importer import import_logs
-from symbench.core.data.metadata import METADATA, content_hash
-from symbench.core.runs import run_cli as run_command
+from symbench.core.data.importing.importer import import_logs
+from symbench.core.data.storage.metadata import METADATA, content_hash
 from symbench.core.runs import runner
+from symbench.core.runs.cli import run as run_command
 from symbench.core.runs.runner import RunSpec
 from symbench.core.training.loop import TrainConfig, train
 from symbench.core.training.normalization import Normalizer

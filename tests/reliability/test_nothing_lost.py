@@ -6,8 +6,9 @@ import pytest
 from synthetic_raw import write_logs
 
 from symbench.core.common.paths import dataset_ids
-from symbench.core.data import importer, load_dataset
-from symbench.core.data.importer import import_logs
+from symbench.core.data import load_dataset
+from symbench.core.data.importing import importer
+from symbench.core.data.importing.importer import import_logs
 
 
 def failing_metadata(error: BaseException):

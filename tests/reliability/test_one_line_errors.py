@@ -15,10 +15,10 @@ from synthetic_raw import write_logs
 
 from symbench import hookimpl
 from symbench.core.common.errors import SymbenchError
-from symbench.core.data.metadata import METADATA, content_hash
+from symbench.core.data.storage.metadata import METADATA, content_hash
 from symbench.core.plugin.host import PluginHost, set_host
-from symbench.core.runs import run_cli as run_command
 from symbench.core.runs import runner
+from symbench.core.runs.cli import run as run_command
 from symbench.core.runs.results import write_record
 from symbench.core.training.checkpoints import write_tensors
 from symbench.core.training.trained_model import TENSORS, TrainedModel

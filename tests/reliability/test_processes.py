@@ -19,10 +19,10 @@ import pytest
 from cli_invoke import error_line, invoke
 from synthetic_raw import write_logs
 
-from symbench.core.data.importer import import_logs
-from symbench.core.runs import run_cli as run_command
+from symbench.core.data.importing.importer import import_logs
 from symbench.core.runs import sweep as sweeping
-from symbench.core.runs import verify_cli
+from symbench.core.runs.cli import run as run_command
+from symbench.core.runs.cli import verify as verify_cli
 from symbench.core.runs.results import read_record, write_record
 
 SYMBENCH = str(Path(sys.executable).parent / "symbench")

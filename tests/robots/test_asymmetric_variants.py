@@ -10,10 +10,10 @@ import pytest
 from cli_invoke import error_line, invoke
 
 from symbench.core.common.errors import SymbenchError
-from symbench.core.data.presets import dataset_id, parse_dataset_id
+from symbench.core.config.presets import dataset_id, parse_dataset_id
 from symbench.core.robot.specs import _read_toml, load_robot, parse_spec
-from symbench.core.sim.arena import Arena
-from symbench.core.sim.model import compile_model
+from symbench.core.sim.scene.arena import Arena
+from symbench.core.sim.scene.mjcf import compile_model
 
 
 def _inertials(spec) -> dict[str, tuple[float, np.ndarray]]:

@@ -7,7 +7,7 @@ import pytest
 
 from symbench.core.common.errors import SymbenchError
 from symbench.core.robot.specs import load_robot, load_spec, parse_spec
-from symbench.core.sim.scenario import Scenario
+from symbench.core.sim.scene.scenario import Scenario
 from symbench.plugins.robots import ROBOTS_DIR
 
 ROBOTS = {"magneto": (4, 2), "hexa": (6, 6), "nona": (9, 9)}

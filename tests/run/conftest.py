@@ -11,7 +11,7 @@ ROBOTS = ("magneto", "hexa", "nona")
 
 @pytest.fixture(scope="session")
 def smoke_home(tmp_path_factory):
-    from symbench.core.data.generation import ensure_dataset
+    from symbench.core.data.generation.generate import ensure_dataset
 
     home = tmp_path_factory.mktemp("symbench-home")
     before = os.environ.get("SYMBENCH_HOME")

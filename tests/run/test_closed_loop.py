@@ -11,8 +11,8 @@ import pytest
 
 from symbench.core.robot.specs import load_robot
 from symbench.core.runs.runner import RunSpec, run
-from symbench.core.sim.learned_control import expert_reference, track
-from symbench.core.sim.scenario import Scenario
+from symbench.core.sim.scene.scenario import Scenario
+from symbench.core.sim.tracking.learned_control import expert_reference, track
 from symbench.plugins.evaluators.closed_loop import held_out_scenarios
 
 ROBOTS = ("magneto", "hexa", "nona")
@@ -103,7 +103,7 @@ def test_a_batch_tracks_each_job_as_alone(smoke_climb):
     """In lockstep, jobs that fall at once (PD alone, no gains), later (PD alone at the
     headline) and never (the oracle) each come out exactly as tracked alone: the shared
     rows belong to their job, and a finished job's rows are left alone."""
-    from symbench.core.sim.learned_control import TrackJob, track_batch
+    from symbench.core.sim.tracking.learned_control import TrackJob, track_batch
 
     scenario, ref = smoke_climb
     oracle, zero = _oracle(ref), (lambda rows: np.zeros_like(ref["tau"][0]))
@@ -307,8 +307,8 @@ class _Renamed:
 def test_the_closed_loop_declares_its_training_where_its_preset_says(
     smoke_home, did, variant, trained_on
 ):
+    from symbench.core.config.presets import preset
     from symbench.core.data import load_dataset
-    from symbench.core.data.presets import preset
     from symbench.core.runs.evaluation import EvaluationContext
     from symbench.core.runs.runner import TrainingJob, model_entry, planned_trainings
 

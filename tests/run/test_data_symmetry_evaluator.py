@@ -5,7 +5,7 @@ from __future__ import annotations
 from types import SimpleNamespace
 
 from symbench.core.data import load_dataset
-from symbench.core.data.symmetry_report import dataset_symmetry
+from symbench.core.data.symmetry.report import dataset_symmetry
 from symbench.plugins.evaluators import data_symmetry
 
 

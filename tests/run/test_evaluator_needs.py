@@ -10,8 +10,8 @@ import pytest
 from cli_invoke import invoke
 
 import symbench
-from symbench.core.data.importer import export_dataset, import_logs
-from symbench.core.data.presets import RECORD_PERIOD
+from symbench.core.config.presets import RECORD_PERIOD
+from symbench.core.data.importing.importer import export_dataset, import_logs
 from symbench.core.plugin import registry
 from symbench.core.runs.evaluation import skip_reason, unmet_need
 from symbench.core.runs.results import read_record

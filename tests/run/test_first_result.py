@@ -19,7 +19,7 @@ def _run(tmp_path, monkeypatch, *extra: str):
         seen.append(spec)
         raise SystemExit(0)
 
-    monkeypatch.setattr("symbench.core.runs.run_cli.run_spec", stop)
+    monkeypatch.setattr("symbench.core.runs.cli.run.run_spec", stop)
     result = CliRunner().invoke(build_cli(), [*SMOKE_RUN, "--output", str(tmp_path), *extra])
     return result, seen
 

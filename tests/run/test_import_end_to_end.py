@@ -1,6 +1,6 @@
 """The worked example of docs/data-format.md, from the command line alone: a log shipped with
-the tests (tests/data/logs/magneto-wall, made by make_log.py: 3 ms rows, positions, velocities
-and torques, no accelerations, base velocities in the base frame) is imported, split by
+the tests (tests/data/importing/logs/magneto-wall, made by make_log.py: 3 ms rows, positions,
+velocities and torques, no accelerations, base velocities in the base frame) is imported, split by
 heading, trained and evaluated; a second dataset's records do not overwrite the first's."""
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ from click.testing import CliRunner
 
 from symbench.core.cli import build_cli
 
-LOG = Path(__file__).parents[1] / "data" / "logs" / "magneto-wall"
+LOG = Path(__file__).parents[1] / "data" / "importing" / "logs" / "magneto-wall"
 SPLIT = ["--split-by", "heading", "--train", "0,90", "--test", "180,270"]
 
 

@@ -8,8 +8,8 @@ import dataclasses
 import numpy as np
 import pytest
 
+from symbench.core.config.presets import PRESETS, Evaluation
 from symbench.core.data import load_dataset
-from symbench.core.data.presets import PRESETS, Evaluation
 from symbench.core.plugin import registry
 from symbench.core.runs.evaluation import EvaluationContext
 from symbench.plugins.evaluators import invariance

@@ -19,10 +19,10 @@ from symbench.core.board import publish as publishing
 from symbench.core.board.publish import publish
 from symbench.core.cli import build_cli, main
 from symbench.core.common.errors import SymbenchError, UnknownNameError
+from symbench.core.config.presets import dataset_id
 from symbench.core.data.dataset import load_dataset
-from symbench.core.data.importer import export_dataset, import_logs
-from symbench.core.data.presets import dataset_id
-from symbench.core.data.standard import standard_hash
+from symbench.core.data.generation.standard import standard_hash
+from symbench.core.data.importing.importer import export_dataset, import_logs
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import ModelEntry
 from symbench.core.plugin.host import PluginHost, PluginProblem, set_host
@@ -127,7 +127,7 @@ def test_refuses_a_cached_dataset_that_differs_from_the_committed_reference(
 ):
     """A cache that passes the recipe check but holds other bytes (forged metadata, or a
     platform that breaks the same-bytes guarantee) is caught by the reference hash."""
-    from symbench.core.data import reference_hashes
+    from symbench.core.data.generation import reference_hashes
 
     monkeypatch.setitem(reference_hashes.CONTENT_HASHES, HEXA, "0" * 64)
     assert_refused(

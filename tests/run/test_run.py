@@ -11,9 +11,9 @@ from click.testing import CliRunner
 import symbench
 from symbench.core.cli import build_cli
 from symbench.core.common.errors import SymbenchError, UnknownNameError
+from symbench.core.config.presets import dataset_id
+from symbench.core.config.provenance import build_hyperparameters, plugin_info
 from symbench.core.data.dataset import load_dataset
-from symbench.core.data.presets import dataset_id
-from symbench.core.data.provenance import build_hyperparameters, plugin_info
 from symbench.core.plugin import registry
 from symbench.core.runs.results import read_record
 from symbench.core.runs.runner import RunSpec, run

@@ -22,10 +22,10 @@ from cli_invoke import error_line, invoke
 from synthetic_raw import fake_simulate
 
 from symbench.core.common.errors import SymbenchError
+from symbench.core.config.presets import PRESETS, Training
 from symbench.core.data.dataset import load_dataset
-from symbench.core.data.generation import generate
-from symbench.core.data.importer import export_dataset, import_logs
-from symbench.core.data.presets import PRESETS, Training
+from symbench.core.data.generation.generate import generate
+from symbench.core.data.importing.importer import export_dataset, import_logs
 from symbench.core.runs.results import read_record, write_record
 from symbench.core.runs.runner import RunSpec, run
 from symbench.core.runs.sweep import plan, sweep

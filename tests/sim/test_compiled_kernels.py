@@ -14,8 +14,7 @@ import numpy as np
 import pytest
 
 from symbench.core.robot.specs import load_robot
-from symbench.core.sim.arena import Arena
-from symbench.core.sim.contact_kernel import (
+from symbench.core.sim.contact.kernel import (
     DIVERGED,
     DROPPED,
     FOOT_LOST,
@@ -23,11 +22,12 @@ from symbench.core.sim.contact_kernel import (
     TILTED,
     hold_state,
 )
-from symbench.core.sim.gait import SETTLE, SWING
-from symbench.core.sim.kinematics import leg_fk, leg_ik
-from symbench.core.sim.model import PAD_SPHERE_RADIUS
-from symbench.core.sim.setup import Climb
-from symbench.core.sim.task import load_climb
+from symbench.core.sim.control.kinematics import leg_fk, leg_ik
+from symbench.core.sim.gait.plan import SETTLE, SWING
+from symbench.core.sim.scene.arena import Arena
+from symbench.core.sim.scene.mjcf import PAD_SPHERE_RADIUS
+from symbench.core.sim.scene.setup import Climb
+from symbench.core.sim.scene.task import load_climb
 
 
 def _physics(robot: str, yaw: float = 20.0):
@@ -106,8 +106,8 @@ def test_the_qp_solution_obeys_the_floating_base_dynamics(robot):
     """At a real state, the controller's QP answer satisfies its equality rows to the
     solver's tolerance and every inequality (friction pyramids, torque limits), and the
     mass matrix the compiled code asked MuJoCo for is MuJoCo's."""
-    from symbench.core.sim import control_kernel
-    from symbench.core.sim.controller import WholeBodyController
+    from symbench.core.sim.control import kernel as control_kernel
+    from symbench.core.sim.control.controller import WholeBodyController
 
     physics = _physics(robot, yaw=35.0)
     model, data, lay = physics.model.ptr, physics.data.ptr, physics.layout

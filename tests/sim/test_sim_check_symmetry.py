@@ -14,7 +14,7 @@ from symbench.core.plugin.entries import RobotEntry
 from symbench.core.plugin.hookspecs import hookimpl
 from symbench.core.plugin.host import PluginHost, set_host
 from symbench.core.robot.specs import load_robot
-from symbench.core.sim import setup
+from symbench.core.sim.scene import setup
 from symbench.core.sim.symmetry import TOLERANCE
 from symbench.plugins.robots import ROBOTS_DIR
 

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from broken_models import ENTRIES as BROKEN
 
-from symbench.core.data import schema
+from symbench.core.data.views import schema
 from symbench.core.plugin import registry
 from symbench.core.symmetry.groups import cyclic, dihedral
 from symbench.testing import (

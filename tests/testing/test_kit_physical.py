@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 from broken_models import MISFRAMED
 
-from symbench.core.data.model_dims import dims_for
+from symbench.core.data.views.model_dims import dims_for
 from symbench.core.plugin import registry
 from symbench.core.training.normalization import TARGET_KEY, Normalizer
 from symbench.testing import (

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from symbench.core.data.model_dims import dims_of
+from symbench.core.data.views.model_dims import dims_of
 from symbench.core.symmetry.groups import cyclic
 from symbench.testing import equivariant_target, synthetic_views
 

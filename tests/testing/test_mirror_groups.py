@@ -10,7 +10,7 @@ import json
 import pytest
 from cli_invoke import error_line, invoke
 
-from symbench.core.data.frames import LegFrames
+from symbench.core.data.views.frames import LegFrames
 from symbench.core.plugin import registry
 from symbench.core.robot.specs import load_robot
 from symbench.testing import robot_frames, robot_geometry_group

@@ -7,7 +7,7 @@ from __future__ import annotations
 import pytest
 
 from symbench.core.common.errors import SymbenchError
-from symbench.core.data.frames import LegFrames
+from symbench.core.data.views.frames import LegFrames
 from symbench.core.plugin import registry
 from symbench.core.robot.specs import load_robot
 from symbench.testing.equivariance import check_model

@@ -16,7 +16,7 @@ from typing import Any
 
 import numpy as np
 
-from symbench.core.data.model_dims import ModelDims
+from symbench.core.data.views.model_dims import ModelDims
 from symbench.core.plugin.entries import ModelEntry
 
 MATMUL_SIZE = 512  # large enough for the BLAS's peak on one core, small enough for seconds

@@ -22,7 +22,7 @@ from rich.table import Table
 from symbench.core.bench.flops import MATMUL_SIZE, matmul_flops_per_s, step_flops_per_sample
 from symbench.core.common.cli_types import POSITIVE
 from symbench.core.common.console import StdoutConsole
-from symbench.core.data.model_dims import dims_of
+from symbench.core.data.views.model_dims import dims_of
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import BACKENDS
 from symbench.core.training.backends import get_backend

@@ -26,9 +26,9 @@ def measure(
 ) -> dict:
     import mujoco
 
-    from symbench.core.sim.rollout import run_climb
-    from symbench.core.sim.scenario import Scenario
-    from symbench.core.sim.setup import Climb
+    from symbench.core.sim.climb.rollout import run_climb
+    from symbench.core.sim.scene.scenario import Scenario
+    from symbench.core.sim.scene.setup import Climb
 
     climb = Climb.from_scenario(Scenario(robot, inclination_deg=inclination, seconds=seconds))
     last = {}

@@ -70,7 +70,7 @@ def leaderboard(
     if checkpoints is not None and html is None:
         raise click.UsageError("--clips and --clips-from need --html")
     if checkpoints is not None:
-        from symbench.core.sim.render import use_software_gl
+        from symbench.core.sim.tracking.render import use_software_gl
 
         use_software_gl()  # before anything loads MuJoCo
     if html is not None:

@@ -13,8 +13,8 @@ from collections.abc import Collection
 from pathlib import Path
 
 from symbench.core.common.errors import SymbenchError
-from symbench.core.data.schema import VARIANTS
-from symbench.core.data.standard import standard_hash
+from symbench.core.data.generation.standard import standard_hash
+from symbench.core.data.views.schema import VARIANTS
 from symbench.core.plugin import registry
 from symbench.core.robot.specs import registered_robot
 from symbench.core.runs.results import ResultRecord, read_record
@@ -51,7 +51,7 @@ class RecordChecks:
         return f"{preset}-preset records are not published (this board takes {takes})"
 
     def _dataset_problem(self, record: ResultRecord) -> str:
-        from symbench.core.data.presets import dataset_id
+        from symbench.core.config.presets import dataset_id
 
         did = record.dataset.id
         expected = dataset_id(record.robot, record.dataset.preset)

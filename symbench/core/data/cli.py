@@ -10,7 +10,7 @@ from rich.table import Table
 
 from symbench.core.common.cli_types import SEED, WORKERS, CommaList, WritableFolder
 from symbench.core.common.console import StdoutConsole
-from symbench.core.data.presets import PRESETS
+from symbench.core.config.presets import PRESETS
 
 console = StdoutConsole()
 
@@ -49,7 +49,7 @@ def _print_failures(failures: list[dict], shown: int = 10) -> None:
 @click.option("--progress/--no-progress", default=True, show_default=True)
 def generate_command(robot: str, preset_name: str, workers: int, progress: bool) -> None:
     """Simulate a preset's scenario grid; resumes an interrupted run."""
-    from symbench.core.data.generation import generate
+    from symbench.core.data.generation.generate import generate
 
     report = generate(robot, preset_name, workers, show_progress=progress)
     kept = report.n_trajectories + report.n_failed - report.n_simulated
@@ -66,8 +66,8 @@ def generate_command(robot: str, preset_name: str, workers: int, progress: bool)
 
 def _print_reference(dataset_id: str, content_hash: str) -> None:
     """Whether this machine made the same bytes as the reference committed with symbench."""
-    from symbench.core.data.metadata import library_versions
-    from symbench.core.data.reference_hashes import reference_hash
+    from symbench.core.data.generation.reference_hashes import reference_hash
+    from symbench.core.data.storage.metadata import library_versions
 
     expected = reference_hash(dataset_id, library_versions())
     if expected is None:
@@ -200,7 +200,7 @@ def split_option(
 )
 def import_command(folder: Path, dataset_id: str | None, force: bool, dry_run: bool) -> None:
     """Import external logs: FOLDER holds import.json and one Parquet/npz file per trajectory."""
-    from symbench.core.data.importer import import_logs, prepare_import
+    from symbench.core.data.importing.importer import import_logs, prepare_import
 
     dataset_id = dataset_id or folder.resolve().name
     prepared = prepare_import(folder, dataset_id)
@@ -225,7 +225,7 @@ def import_command(folder: Path, dataset_id: str | None, force: bool, dry_run: b
 def export_command(dataset_id: str, folder: Path, fmt: str) -> None:
     """Write a cached dataset in the import format (for other tools, or to re-import)."""
     from symbench.core.data.dataset import load_dataset
-    from symbench.core.data.importer import export_dataset
+    from symbench.core.data.importing.importer import export_dataset
 
     export_dataset(load_dataset(dataset_id), folder, fmt)
     console.print(f"exported {dataset_id} to {folder}")
@@ -246,7 +246,7 @@ def symmetry_command(dataset_id: str, output: Path | None, as_json: bool) -> Non
     from rich.markup import escape
 
     from symbench.core.data.dataset import load_dataset
-    from symbench.core.data.symmetry_report import PLOT_NAME, dataset_symmetry, symmetry_png
+    from symbench.core.data.symmetry.report import PLOT_NAME, dataset_symmetry, symmetry_png
 
     dataset = load_dataset(dataset_id)
     report = dataset_symmetry(dataset)

@@ -16,13 +16,12 @@ import numpy as np
 
 from symbench.core.common.arrays import ViewArrays
 from symbench.core.common.errors import SymbenchError
-from symbench.core.data.derive import require_known
-from symbench.core.data.frames import LegFrames
-from symbench.core.data.metadata import read_metadata, verify
-from symbench.core.data.presets import parse_dataset_id
+from symbench.core.config.presets import parse_dataset_id
 from symbench.core.data.splits import SplitContext, SplitIndices, resolve
-from symbench.core.data.storage import read_trajectory
-from symbench.core.data.views import build_view
+from symbench.core.data.storage.files import read_trajectory
+from symbench.core.data.storage.metadata import read_metadata, verify
+from symbench.core.data.views.frames import LegFrames
+from symbench.core.data.views.transforms import build_view, require_known
 
 
 @dataclass

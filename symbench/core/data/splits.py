@@ -21,7 +21,7 @@ from typing import Any
 import numpy as np
 
 from symbench.core.common.errors import SymbenchError, UnknownNameError
-from symbench.core.sim.scenario import DIRECTIONS
+from symbench.core.sim.scene.scenario import DIRECTIONS
 
 LABELS = ("train", "val", "test", "unused")
 VAL_FRACTION = 0.15

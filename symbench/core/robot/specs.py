@@ -1,7 +1,7 @@
 """Robot specs: read `robots/<name>/robot.toml` into a frozen, validated `RobotSpec`.
 
 The spec is the single source of a robot's geometry, masses, limits, magnet, gait defaults
-and symmetry; the MJCF (symbench.core.sim.model) and the leg frames used by the views are
+and symmetry; the MJCF (symbench.core.sim.scene.mjcf) and the leg frames used by the views are
 both derived from it, so they cannot disagree. Legs are numbered counter-clockwise seen from
 above; leg frame i sits at the coxa joint in the zero configuration, z along the base z, x
 along the coxa's zero direction.

@@ -6,9 +6,9 @@ from collections.abc import Callable
 
 import numpy as np
 
-from symbench.core.data.frames import LegFrames
-from symbench.core.data.views import build_view
-from symbench.core.sim.learned_control import BatchPolicy
+from symbench.core.data.views.frames import LegFrames
+from symbench.core.data.views.transforms import build_view
+from symbench.core.sim.tracking.learned_control import BatchPolicy
 
 
 def feedforward_policy(

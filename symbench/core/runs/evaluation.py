@@ -23,8 +23,8 @@ import numpy as np
 
 from symbench.core.common.arrays import ViewArrays
 from symbench.core.common.errors import SymbenchError
-from symbench.core.data.presets import RECORD_PERIOD, Preset, dataset_id, parse_dataset_id, preset
-from symbench.core.data.scenario_fields import SCENARIO_KEYS
+from symbench.core.config.presets import RECORD_PERIOD, Preset, dataset_id, parse_dataset_id, preset
+from symbench.core.data.storage.scenario_fields import SCENARIO_KEYS
 from symbench.core.plugin.entries import EvaluatorEntry, ModelEntry
 from symbench.core.plugin.registry import evaluator
 
@@ -133,7 +133,7 @@ class EvaluationContext:
 
     def predict_raw(self, raw: dict[str, np.ndarray], ids: np.ndarray) -> np.ndarray:
         """The model's torques for raw states, through its own view."""
-        from symbench.core.data.views import build_view
+        from symbench.core.data.views.transforms import build_view
 
         arrays = build_view(raw, ids, self.dataset.frames, self.entry.view, self.entry.variant)
         return self.predict(arrays.inputs)

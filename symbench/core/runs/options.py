@@ -8,7 +8,7 @@ from typing import Any
 import click
 
 from symbench.core.common.cli_types import EPOCHS
-from symbench.core.training.protocols import PROTOCOLS
+from symbench.core.config.protocols import PROTOCOLS
 
 
 def protocol_option(help_text: str) -> Callable[[Any], Any]:

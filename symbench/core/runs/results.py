@@ -32,7 +32,7 @@ from symbench.core.common.atomic import write_text_atomic
 from symbench.core.common.errors import SymbenchError
 from symbench.core.common.jsonfile import parse_json
 from symbench.core.common.validation import explain
-from symbench.core.training.protocols import Protocol, StoppedBy
+from symbench.core.config.protocols import Protocol, StoppedBy
 
 RECORD_SCHEMA_VERSION: Final = 2
 LEGACY_SCHEMA_VERSION = 1  # unsealed, no provenance: shown by `symbench leaderboard` only

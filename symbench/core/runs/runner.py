@@ -24,8 +24,9 @@ from typing import TYPE_CHECKING, Any, Literal
 
 from symbench.core.common.errors import SymbenchError, UnknownNameError
 from symbench.core.common.paths import writable_folder
-from symbench.core.data.presets import dataset_id, parse_dataset_id, preset
-from symbench.core.data.provenance import (
+from symbench.core.config.presets import dataset_id, parse_dataset_id, preset
+from symbench.core.config.protocols import PROTOCOLS, STEP_BUDGET
+from symbench.core.config.provenance import (
     build_hyperparameters,
     checkpoint_file_hashes,
     git_commit,
@@ -33,8 +34,8 @@ from symbench.core.data.provenance import (
     library_versions,
     plugin_info,
 )
-from symbench.core.data.schema import VARIANTS
 from symbench.core.data.splits import check_split
+from symbench.core.data.views.schema import VARIANTS
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import ModelEntry
 from symbench.core.robot.specs import registered_robot
@@ -51,7 +52,6 @@ from symbench.core.runs.results import (
     run_key,
     write_record,
 )
-from symbench.core.training.protocols import PROTOCOLS, STEP_BUDGET
 
 if TYPE_CHECKING:
     from symbench.core.training.loop import TrainConfig
@@ -177,7 +177,7 @@ def dataset_robot(did: str) -> str:
     """The robot whose trajectories dataset `did` holds: its metadata's when it is cached, a
     standard id's robot otherwise; an error for any other id missing from the cache."""
     from symbench.core.data.dataset import missing_hint
-    from symbench.core.data.metadata import METADATA, dataset_dir, read_metadata
+    from symbench.core.data.storage.metadata import METADATA, dataset_dir, read_metadata
 
     if not re.match(IDENTIFIER, did) or len(did) > 100:
         raise SymbenchError(
@@ -249,7 +249,7 @@ def _matched(
 ) -> tuple[tuple[str, int], ...]:
     """Found once per process: a run asks for its configuration several times (plan,
     record check, training), and each search builds about a dozen networks."""
-    from symbench.core.data.model_dims import dims_for
+    from symbench.core.data.views.model_dims import dims_for
     from symbench.core.training.sizes import matched_widths
 
     entry = replace(registry.model(model, backend), variant=variant)
@@ -271,7 +271,7 @@ def ensure_dataset(spec: RunSpec):
     """The run's dataset: a standard one is generated first when it is not in the cache (or
     its robot spec changed); any other (imported) must be in the cache."""
     from symbench.core.data.dataset import load_dataset
-    from symbench.core.data.generation import ensure_dataset as ensure
+    from symbench.core.data.generation.generate import ensure_dataset as ensure
 
     did = spec.dataset_id
     if is_standard(did):

@@ -20,11 +20,11 @@ from pathlib import Path
 from typing import Any
 
 from symbench.core.common.errors import SymbenchError
-from symbench.core.data.provenance import git_commit
+from symbench.core.config.protocols import STEP_BUDGET
+from symbench.core.config.provenance import git_commit
 from symbench.core.plugin.entries import ModelEntry
 from symbench.core.runs.runner import RunSpec, ensure_dataset, model_entry, train_config
 from symbench.core.training.checkpoints import write_json
-from symbench.core.training.protocols import STEP_BUDGET
 from symbench.core.training.sizes import scaled_widths
 
 DEFAULT_RATE_FACTORS = (1 / 3, 1.0, 3.0)  # around the model's own learning rate

@@ -25,11 +25,11 @@ from pathlib import Path
 from typing import Any
 
 from symbench.core.common.errors import SymbenchError
-from symbench.core.data.presets import parse_dataset_id
-from symbench.core.data.standard import standard_hash
+from symbench.core.config.presets import parse_dataset_id
+from symbench.core.config.protocols import STEP_BUDGET
+from symbench.core.data.generation.standard import standard_hash
 from symbench.core.runs.results import ResultRecord, read_record
 from symbench.core.runs.runner import RunSpec, ensure_dataset, run
-from symbench.core.training.protocols import STEP_BUDGET
 
 RTOL = 1e-6
 ATOL = 1e-12

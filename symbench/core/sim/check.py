@@ -7,9 +7,9 @@ import math
 from dataclasses import dataclass
 
 from symbench.core.common.errors import SymbenchError
-from symbench.core.sim.rollout import run_climb
-from symbench.core.sim.scenario import Scenario
-from symbench.core.sim.setup import Climb
+from symbench.core.sim.climb.rollout import run_climb
+from symbench.core.sim.scene.scenario import Scenario
+from symbench.core.sim.scene.setup import Climb
 from symbench.core.sim.symmetry import TOLERANCE, GeneratorCheck, check_generators
 
 

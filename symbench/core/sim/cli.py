@@ -8,7 +8,7 @@ import sys
 import click
 
 from symbench.core.common.cli_types import INCLINATION, POSITIVE, SEED, FiniteFloat
-from symbench.core.sim.scenario import DIRECTIONS
+from symbench.core.sim.scene.scenario import DIRECTIONS
 
 
 @click.group("sim")
@@ -78,7 +78,7 @@ def check_command(
     and of the mirrors its geometry has (turned, or mirrored, and relabelled); exit status 1
     when the robot detached or a twin differs from the run by more than the tolerance."""
     from symbench.core.sim.check import check
-    from symbench.core.sim.scenario import Scenario
+    from symbench.core.sim.scene.scenario import Scenario
 
     scenario = Scenario(robot, inclination, heading, yaw, direction, None, seed, seconds)
     symmetry = seconds if symmetry_seconds is None else symmetry_seconds
@@ -141,8 +141,8 @@ def _print_symmetry(report) -> None:
 def mjcf_command(robot: str, inclination: float, heading: float) -> None:
     """Print the generated MJCF of ROBOT on its arena (for inspection; never stored)."""
     from symbench.core.robot.specs import load_robot
-    from symbench.core.sim.arena import Arena
-    from symbench.core.sim.model import build_spec
+    from symbench.core.sim.scene.arena import Arena
+    from symbench.core.sim.scene.mjcf import build_spec
 
     spec = build_spec(load_robot(robot), Arena(inclination, heading))
     spec.compile()

@@ -22,9 +22,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from symbench.core.sim.climb.rollout import Rollout, run_climb
 from symbench.core.sim.raw import FLAG_COLUMNS, JOINT_COLUMNS, WORLD_VECTORS
-from symbench.core.sim.rollout import Rollout, run_climb
-from symbench.core.sim.setup import Climb
+from symbench.core.sim.scene.setup import Climb
 from symbench.core.symmetry.groups import GroupElement
 from symbench.core.symmetry.legs import JOINT_MIRROR_SIGNS, MIRROR_Y, base_map
 

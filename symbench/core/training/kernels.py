@@ -1,9 +1,9 @@
 """Training gives the same numbers on every x86-64 CPU with AVX2: torch and XLA are held to
 their AVX2 kernels.
 
-Why: like the simulator's libraries (see `symbench.core.data.determinism`), torch picks its
-kernels by CPU at run time: ATen's vectorized loops (AVX2 or AVX-512), MKL's matrix products
-and oneDNN; XLA compiles for the host's widest instructions. Each rounds float32 differently,
+Why: like the simulator's libraries (see `symbench.core.data.generation.determinism`), torch picks
+its kernels by CPU at run time: ATen's vectorized loops (AVX2 or AVX-512), MKL's matrix products and
+oneDNN; XLA compiles for the host's widest instructions. Each rounds float32 differently,
 and sixty epochs of Adam grow a last-bit difference into different metrics (measured: the
 same smoke record retrained with ATen's default kernels instead of its AVX2 ones changed 11
 of its 14 metric values), so `symbench verify` on another CPU would disagree with an honest

@@ -45,12 +45,12 @@ from rich.progress import (
 from symbench.core.common.arrays import ViewArrays
 from symbench.core.common.errors import SymbenchError
 from symbench.core.common.seeds import check_seed
-from symbench.core.data.model_dims import ModelDims, dims_of
+from symbench.core.config.protocols import PROTOCOLS, STEP_BUDGET, rate_scale
+from symbench.core.data.views.model_dims import ModelDims, dims_of
 from symbench.core.plugin.entries import ModelEntry
 from symbench.core.training import resume
 from symbench.core.training.backends import get_backend
 from symbench.core.training.normalization import Normalizer
-from symbench.core.training.protocols import PROTOCOLS, STEP_BUDGET, rate_scale
 from symbench.core.training.trained_model import TrainedModel
 
 

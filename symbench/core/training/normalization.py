@@ -16,8 +16,8 @@ import numpy as np
 
 from symbench.core.common.arrays import ViewArrays
 from symbench.core.common.errors import SymbenchError
-from symbench.core.data import schema
-from symbench.core.data.model_dims import ModelDims
+from symbench.core.data.views import schema
+from symbench.core.data.views.model_dims import ModelDims
 
 MIN_STD = 1e-8
 TARGET_KEY = "target"

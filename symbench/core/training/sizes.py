@@ -10,8 +10,8 @@ width.
 from __future__ import annotations
 
 from symbench.core.common.errors import SymbenchError
-from symbench.core.data.model_dims import ModelDims
-from symbench.core.data.provenance import build_hyperparameters
+from symbench.core.config.provenance import build_hyperparameters
+from symbench.core.data.views.model_dims import ModelDims
 from symbench.core.plugin.entries import ModelEntry
 from symbench.core.training.backends import get_backend
 

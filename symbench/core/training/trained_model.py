@@ -18,7 +18,7 @@ from pydantic import ValidationError
 from symbench.core.common.errors import SymbenchError
 from symbench.core.common.validation import explain
 from symbench.core.common.version import __version__
-from symbench.core.data.model_dims import ModelDims
+from symbench.core.data.views.model_dims import ModelDims
 from symbench.core.plugin.entries import ModelEntry
 from symbench.core.training.backends import Predictor, get_backend
 from symbench.core.training.checkpoints import encode, read_tensors, write_json, write_tensors

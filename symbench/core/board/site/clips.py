@@ -15,7 +15,7 @@ and the worst model of the dataset climbing beside the expert, so the difference
   expert's recorded torques replayed with the same gains (`oracle_policy`: its climb again,
   to rounding), since a recorded reference lacks the passive ankle joints a pose needs.
 
-Each clip is rendered by symbench.core.sim.render (both sides from one fixed camera on the
+Each clip is rendered by symbench.core.sim.tracking.render (both sides from one fixed camera on the
 reference's path, so a model that strays is seen straying; a failed climb holds its last
 state) and written as `clips/<robot>__<dataset>-<best|worst>-<model>.webp`.
 """
@@ -37,13 +37,19 @@ from symbench.core.board.site.names import GroupKey
 from symbench.core.board.site.pages import CLOSED_LOOP, group_of, row_key
 from symbench.core.common.atomic import write_bytes_atomic
 from symbench.core.common.errors import SymbenchError
-from symbench.core.data.presets import preset
+from symbench.core.config.presets import preset
 from symbench.core.runs.control_policy import feedforward_policy
 from symbench.core.runs.results import RecordV1
 from symbench.core.runs.runner import checkpoint_root
-from symbench.core.sim.learned_control import Tracking, expert_reference, track, track_batch
-from symbench.core.sim.references import model_jobs, oracle_policy, reference_scenarios
-from symbench.core.sim.render import (
+from symbench.core.sim.scene.scenario import Scenario
+from symbench.core.sim.tracking.learned_control import (
+    Tracking,
+    expert_reference,
+    track,
+    track_batch,
+)
+from symbench.core.sim.tracking.references import model_jobs, oracle_policy, reference_scenarios
+from symbench.core.sim.tracking.render import (
     Camera,
     ClimbRenderer,
     Recording,
@@ -52,7 +58,6 @@ from symbench.core.sim.render import (
     side_by_side,
     webp,
 )
-from symbench.core.sim.scenario import Scenario
 
 if TYPE_CHECKING:
     from symbench.core.data.dataset import Dataset

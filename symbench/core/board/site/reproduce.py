@@ -7,9 +7,9 @@ import shlex
 from pathlib import Path
 
 from symbench.core.board.leaderboard import protocol_of
-from symbench.core.data.presets import PRESETS, dataset_id, parse_dataset_id
+from symbench.core.config.presets import PRESETS, dataset_id, parse_dataset_id
+from symbench.core.config.protocols import STEP_BUDGET
 from symbench.core.runs.results import RecordV1
-from symbench.core.training.protocols import STEP_BUDGET
 
 
 def run_command(record: RecordV1) -> str:

@@ -15,7 +15,7 @@ from typing import Any, Protocol
 import numpy as np
 
 from symbench.core.common.errors import UnknownNameError
-from symbench.core.data.model_dims import ModelDims
+from symbench.core.data.views.model_dims import ModelDims
 from symbench.core.plugin.entries import BACKENDS, ModelEntry
 from symbench.core.training.normalization import Normalizer
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 from typing import Any
 
 from symbench.core.common.errors import SymbenchError
-from symbench.core.data.model_dims import ModelDims
+from symbench.core.data.views.model_dims import ModelDims
 from symbench.core.plugin.entries import ModelEntry
 
 

@@ -27,7 +27,7 @@ import numpy as np
 import optax
 from flax import traverse_util
 
-from symbench.core.data.model_dims import ModelDims
+from symbench.core.data.views.model_dims import ModelDims
 from symbench.core.plugin.entries import ModelEntry
 from symbench.core.training.backends.checks import build_error, check_output, check_params
 from symbench.core.training.normalization import TARGET_KEY

@@ -1,0 +1,62 @@
+"""`symbench presets`: every preset's sizes, budgets and horizons, side by side."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import asdict, fields
+from typing import Any
+
+import click
+from rich.table import Table
+
+from symbench.core.common.console import StdoutConsole
+from symbench.core.config.presets import PRESETS, Preset
+
+# the groups of a Preset, in the order they are shown
+SECTIONS = tuple(f.name for f in fields(Preset) if f.name not in ("name", "description"))
+
+
+def presets_doc() -> dict[str, dict[str, Any]]:
+    """Every preset as JSON-ready data, by name: exactly the Preset objects' fields."""
+    return json.loads(json.dumps({name: asdict(p) for name, p in PRESETS.items()}))
+
+
+def _cell(value: Any) -> str:
+    if isinstance(value, list):
+        return ", ".join(_cell(v) for v in value) if value else "-"
+    if isinstance(value, float):
+        return f"{value:g}"
+    return str(value)
+
+
+def presets_table(doc: dict[str, dict[str, Any]]) -> Table:
+    """One column per preset, one row per number, grouped by section."""
+    table = Table(
+        title="symbench presets",
+        caption="dataset: one trajectory per combination of its axes (yaws: at least "
+        "yaws_per_turn, a whole number per symmetry sector; 0: just 0 and 180); "
+        "the budgets below it are not part of the dataset",
+    )
+    table.add_column("section", style="bold")
+    table.add_column("setting")
+    for name in doc:
+        table.add_column(name, overflow="fold")
+    table.add_row("", "description", *(p["description"] for p in doc.values()))
+    for section in SECTIONS:
+        table.add_section()
+        settings = list(next(iter(doc.values()))[section])
+        for i, setting in enumerate(settings):
+            label = section.replace("_", " ") if i == 0 else ""
+            table.add_row(label, setting, *(_cell(p[section][setting]) for p in doc.values()))
+    return table
+
+
+@click.command("presets")
+@click.option("--json", "as_json", is_flag=True, help="Print JSON instead of a table.")
+def presets(as_json: bool) -> None:
+    """Every preset's dataset grid, training budget, evaluation budgets and horizons."""
+    doc = presets_doc()
+    if as_json:
+        click.echo(json.dumps(doc, indent=2))
+        return
+    StdoutConsole().print(presets_table(doc))

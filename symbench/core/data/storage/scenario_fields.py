@@ -1,0 +1,38 @@
+"""A trajectory's scenario as a dataset stores it, validated: every field optional (imported
+logs may not know their slope), each of the right type and finite when given, so that splits
+never meet a heading of "north" or NaN."""
+
+from __future__ import annotations
+
+from typing import Annotated, Literal
+
+from pydantic import BaseModel, ConfigDict, Field
+
+from symbench.core.sim.scene.scenario import DIRECTIONS
+
+Finite = Annotated[float, Field(allow_inf_nan=False)]
+
+
+class ScenarioFields(BaseModel):
+    """The fields of `symbench.core.sim.scene.scenario.Scenario` but the robot."""
+
+    model_config = ConfigDict(extra="forbid", strict=True, frozen=True)
+
+    inclination_deg: Annotated[float, Field(ge=0, le=180, allow_inf_nan=False)] | None = None
+    heading_deg: Finite | None = None
+    yaw_deg: Finite | None = None
+    direction: Literal[tuple(DIRECTIONS)] | None = None  # type: ignore[valid-type]
+    leg_order: list[Annotated[int, Field(ge=0)]] | None = None
+    seed: Annotated[int, Field(ge=0)] | None = None
+    seconds: Annotated[float, Field(gt=0, allow_inf_nan=False)] | None = None
+    # N m, only in data for control (a noisy preset): absent means none
+    torque_noise: Annotated[float, Field(ge=0, allow_inf_nan=False)] | None = None
+
+
+class StoredScenario(ScenarioFields):
+    """A scenario in a dataset's metadata: the robot too."""
+
+    robot: str
+
+
+SCENARIO_KEYS = tuple(ScenarioFields.model_fields)

@@ -1,0 +1,1 @@
+"""The run-layer commands, one module each: run, sweep, tune, verify."""

@@ -1,0 +1,1 @@
+"""The whole-body controller: the QP, the leg kinematics, and its compiled kernel."""

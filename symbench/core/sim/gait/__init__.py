@@ -1,0 +1,1 @@
+"""The climbing gait: the plan (Python) beside its per-step compiled kernel."""

@@ -1,0 +1,149 @@
+"""One climb, fully specified in numbers: the robot on its arena, start pose and gait.
+
+`Climb.from_scenario` maps a `Scenario` (direction by name) onto it; the symmetry check uses
+`Climb` directly because a turned (or mirrored) and relabelled run steps in another body
+direction.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from symbench.core.common.errors import SymbenchError
+from symbench.core.robot.specs import RobotSpec, load_robot
+from symbench.core.sim.control.kinematics import leg_fk, leg_ik
+from symbench.core.sim.gait.plan import GaitPlan, check_order, default_order
+from symbench.core.sim.scene.arena import Arena, rot_z
+from symbench.core.sim.scene.mjcf import ankle_to_sole, stance_height
+from symbench.core.sim.scene.scenario import Scenario
+from symbench.core.symmetry.groups import GroupElement
+from symbench.core.symmetry.legs import MIRROR_Y, base_map
+
+# Seeded start perturbation: a translation in the surface plane and a small base twist,
+# both world-frame, so that they commute with the robot's rotation symmetry (a mirrored climb
+# mirrors them: the cross-slope components and the twist change sign).
+SEED_OFFSET = 0.01  # m
+SEED_LINVEL = 0.02  # m/s
+SEED_ANGVEL = 0.05  # rad/s
+
+
+@dataclass(frozen=True)
+class Climb:
+    spec: RobotSpec
+    arena: Arena
+    yaw_deg: float = 0.0
+    direction_deg: float = 0.0  # body frame, counter-clockwise from the base x axis
+    order: tuple[int, ...] | None = None
+    seed: int = 0
+    mirrored: bool = False  # the seeded perturbation mirrored across the slope line
+
+    @classmethod
+    def from_scenario(cls, scenario: Scenario, spec: RobotSpec | None = None) -> Climb:
+        """The climb of `scenario`, its gait carried along by the robot's rotation symmetry.
+
+        A yaw of k whole symmetry steps plus a remainder is the remainder's climb turned k
+        times (`turned`): the step direction turns back and the swing order is relabelled
+        with the legs, so scenarios whose yaws differ by a symmetry rotation are exact
+        symmetric images of each other (what the `unseen-rotation` split tests). Within the
+        first step the direction is the body frame's.
+        """
+        spec = spec or load_robot(scenario.robot)
+        step = spec.symmetry_angle_deg
+        k = int(np.floor(round(scenario.yaw_deg % 360.0, 9) / step))
+        base = cls(
+            spec,
+            Arena(scenario.inclination_deg, scenario.heading_deg),
+            scenario.yaw_deg - k * step,
+            scenario.direction_deg,
+            scenario.leg_order,
+            scenario.seed,
+        )
+        return replace(base.turned(k), yaw_deg=scenario.yaw_deg)
+
+    def turned(self, steps: int = 1) -> Climb:
+        """The same climb with the base turned by `steps` symmetry steps and the legs
+        relabelled: the body direction turns back by the same angle (the same direction in
+        the world) and the leg order follows the labels."""
+        spec = self.spec
+        k, angle = spec.symmetry_shift * steps, spec.symmetry_angle_deg * steps
+        order = tuple((leg - k) % spec.n_legs for leg in self.leg_order)
+        return replace(
+            self,
+            yaw_deg=self.yaw_deg + angle,
+            direction_deg=self.direction_deg - angle,
+            order=order,
+        )
+
+    def reflected(self, g: GroupElement) -> Climb:
+        """The mirror image of this climb under the reflection element `g`, legs relabelled.
+
+        The scene is mirrored in the plane through the surface normal and the slope line,
+        which keeps the surface and gravity; the robot's image is the robot again with leg i
+        as leg g.perm[i] (refused when its legs lack that symmetry). So the base yaw and the
+        body step direction reflect about the element's mirror line, the swing order follows
+        the labels and the seeded start perturbation is mirrored.
+        """
+        if not g.reflect:
+            raise SymbenchError(f"{g.name} is a rotation; turn the climb instead")
+        gb = base_map(self.spec.leg_rotations(), self.spec.leg_origins(), g)
+        twice_axis = float(np.degrees(np.arctan2(*(gb @ MIRROR_Y)[[1, 0], 0])))
+        return replace(
+            self,
+            yaw_deg=-self.yaw_deg - twice_axis,
+            direction_deg=twice_axis - self.direction_deg,
+            order=tuple(g.perm[leg] for leg in self.leg_order),
+            mirrored=not self.mirrored,
+        )
+
+    @property
+    def leg_order(self) -> tuple[int, ...]:
+        n = self.spec.n_legs
+        return check_order(self.order, n) if self.order is not None else default_order(n)
+
+    @property
+    def base_rotation(self) -> np.ndarray:
+        """R_wb at the start, also the orientation the controller holds."""
+        return self.arena.rotation @ rot_z(np.radians(self.yaw_deg))
+
+    def _seeded(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        rng = np.random.default_rng(self.seed)
+        surface = self.arena.rotation
+        side = np.array([1.0, -1.0]) if self.mirrored else np.ones(2)
+        offset = surface[:, :2] @ (side * rng.uniform(-SEED_OFFSET, SEED_OFFSET, 2))
+        linvel = surface[:, :2] @ (side * rng.uniform(-SEED_LINVEL, SEED_LINVEL, 2))
+        angvel = self.arena.normal * (side[1] * rng.uniform(-SEED_ANGVEL, SEED_ANGVEL))
+        return offset, linvel, angvel
+
+    def plan(self) -> GaitPlan:
+        spec, r_wb = self.spec, self.base_rotation
+        beta = np.radians(self.direction_deg)
+        dir_body = np.array([np.cos(beta), np.sin(beta), 0.0])
+        offset, _, _ = self._seeded()
+        base = stance_height(spec) * self.arena.normal + offset
+        soles = self._nominal_soles_body() + np.outer(
+            GaitPlan.stagger(spec, self.leg_order), dir_body
+        )
+        return GaitPlan(
+            spec, self.leg_order, r_wb @ dir_body, self.arena.normal, base, base + soles @ r_wb.T
+        )
+
+    def _nominal_soles_body(self) -> np.ndarray:
+        spec = self.spec
+        ankle = leg_fk(spec, np.asarray(spec.leg.stance))
+        ankles = np.einsum("nij,j->ni", spec.leg_rotations(), ankle) + spec.leg_origins()
+        return ankles - np.array([0.0, 0.0, ankle_to_sole(spec)])
+
+    def initial_state(self, plan: GaitPlan) -> tuple[np.ndarray, ...]:
+        """Base position, R_wb, world linear and angular velocity, joint angles (n, 3) and
+        ankle pitch angles (n,) that put every sole on its start point, the foot axis along
+        the surface normal."""
+        spec, r_wb = self.spec, self.base_rotation
+        lift = np.array([0.0, 0.0, ankle_to_sole(spec)])
+        ankles_body = (plan.soles_start - plan.base_start) @ r_wb + lift
+        in_leg = np.einsum("nji,nj->ni", spec.leg_rotations(), ankles_body - spec.leg_origins())
+        q = leg_ik(spec, in_leg)
+        ankle_pitch = q[:, 1] + q[:, 2] + np.pi / 2  # turns the tibia axis onto -normal
+        _, linvel, angvel = self._seeded()
+        return plan.base_start, r_wb, linvel, angvel, q, ankle_pitch

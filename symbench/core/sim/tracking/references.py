@@ -1,0 +1,99 @@
+"""The climbs the closed loop tracks, and the expert's own torques replayed on them.
+
+One implementation for everyone who must track what the closed-loop evaluator tracked: the
+evaluator itself (symbench/plugins/evaluators/closed_loop.py) and the leaderboard site's
+clips (symbench/core/board/site/clips.py), both through the public API.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+if TYPE_CHECKING:
+    from symbench.core.sim.scene.scenario import Scenario
+    from symbench.core.sim.tracking.learned_control import Policy, TrackJob
+
+
+def held_out_scenarios(dataset, test_ids: np.ndarray, n: int, rotation_order: int = 1) -> list:
+    """Scenarios of up to n test trajectories from distinct symmetry orbits, deterministic.
+
+    Two scenarios whose yaws differ by a rotation of the robot's group (360 / order
+    degrees) are images of each other (turned base, relabelled legs), so they share an
+    orbit; so are climbs that differ only in heading, the whole scene turned about gravity,
+    but the robot's group does not make them images, so they count as distinct after all
+    the others. Test trajectories are taken in id order (ids skip the trajectories that
+    failed in generation, so they are not positions): first one per orbit of the robot's
+    motion (inclination, direction, leg order, yaw within the sector), then one per further
+    heading of those.
+    """
+    by_id = dict(zip(np.asarray(dataset.trajectory_ids).tolist(), dataset.scenarios))
+    sector = 360.0 / max(int(rotation_order), 1)
+    candidates = [by_id[int(i)] for i in sorted(np.asarray(test_ids).tolist()) if int(i) in by_id]
+
+    def motion(s: dict) -> tuple:
+        yaw = round(float(s.get("yaw_deg", 0.0)) % sector, 6) % sector
+        order = s.get("leg_order")
+        return (
+            float(s.get("inclination_deg", 0.0)),
+            s.get("direction", "forward"),
+            tuple(order) if order is not None else None,
+            yaw,
+        )
+
+    chosen: list[dict] = []
+    motions: set[tuple] = set()
+    orbits: set[tuple] = set()
+    for s in candidates:  # one per motion
+        if len(chosen) < n and motion(s) not in motions:
+            motions.add(motion(s))
+            orbits.add((*motion(s), float(s.get("heading_deg", 0.0)) % 360.0))
+            chosen.append(s)
+    for s in candidates:  # then other headings of those motions
+        orbit = (*motion(s), float(s.get("heading_deg", 0.0)) % 360.0)
+        if len(chosen) < n and orbit not in orbits:
+            orbits.add(orbit)
+            chosen.append(s)
+    return chosen
+
+
+def reference_scenarios(
+    dataset, test_ids: np.ndarray, n: int, seconds: float, rotation_order: int = 1
+) -> list[dict]:
+    """The scenario fields of the closed loop's references (`held_out_scenarios`): each
+    tracked over its climb's length capped at `seconds` (the preset's horizon), as the
+    expert climbs it without noise (when the dataset is a noisy one)."""
+    return [
+        {
+            **{k: v for k, v in fields.items() if k != "torque_noise"},
+            "seconds": min(float(fields.get("seconds", seconds)), seconds),
+        }
+        for fields in held_out_scenarios(dataset, test_ids, n, rotation_order)
+    ]
+
+
+def oracle_policy(reference: dict[str, np.ndarray]) -> Policy:
+    """The expert's recorded torque of the current physics step (`reference` as
+    `expert_reference` records it): tracked, it gives back the expert's climb to rounding
+    at every PD gain (the closed loop's `oracle` row)."""
+    tau = reference["tau"]
+    dt = float(reference["t"][1] - reference["t"][0])
+    return lambda rows: tau[int(round(float(rows["t"][0]) / dt))]
+
+
+def model_jobs(
+    references: Sequence[tuple[Scenario, dict[str, np.ndarray]]],
+    fractions: Sequence[float],
+    servo_gains: tuple[float, float],
+) -> list[TrackJob]:
+    """The closed loop's rollouts of one model, in the evaluator's order: every reference
+    (scenario, the expert's climb at every physics step) at every PD fraction of the servo
+    gains (Kp, Kd), fractions inner. `track_batch` of them with the model's policy is the
+    evaluator's measurement; a model's torques may round differently in another batch, so
+    whoever reproduces one of these rollouts runs this very batch."""
+    from symbench.core.sim.tracking.learned_control import TrackJob
+
+    kp, kd = servo_gains
+    return [TrackJob(s, r, (f * kp, f * kd)) for s, r in references for f in fractions]
