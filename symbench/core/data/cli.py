@@ -246,7 +246,12 @@ def symmetry_command(dataset_id: str, output: Path | None, as_json: bool) -> Non
     from rich.markup import escape
 
     from symbench.core.data.dataset import load_dataset
-    from symbench.core.data.symmetry.report import PLOT_NAME, dataset_symmetry, symmetry_png
+    from symbench.core.data.symmetry.report import (
+        PLOT_NAME,
+        READING_NAMES,
+        dataset_symmetry,
+        symmetry_png,
+    )
 
     dataset = load_dataset(dataset_id)
     report = dataset_symmetry(dataset)
@@ -261,7 +266,22 @@ def symmetry_command(dataset_id: str, output: Path | None, as_json: bool) -> Non
         f"{len(report.pairs)} image pairs among {report.trajectories} trajectories "
         f"({', '.join(elements)}); noise floor from {report.floor_source}"
         + (f" ({report.repeats} repeat pairs)" if report.floor_source == "repeats" else "")
+        + f"; scenarios read as {READING_NAMES[report.reading]}"
     )
+    shifted = [p for p in report.pairs if p.alignment.aligned and p.alignment.shift]
+    if shifted:
+        console.print(
+            f"{len(shifted)} image pairs start at different phases, aligned on their first "
+            f"lift-off (shifts of {', '.join(sorted({str(p.alignment.shift) for p in shifted}))}"
+            " rows)"
+        )
+    if report.unaligned:
+        console.print(
+            f"{len(report.unaligned)} image pairs could not be aligned: "
+            + "; ".join(sorted({escape(p.alignment.how) for p in report.unaligned}))
+        )
+    if report.floor_note:
+        console.print(f"[yellow]noise floor uninformative[/]: {escape(report.floor_note)}")
     table = Table(
         title="relative RMS error after relabelling, against the noise floor",
         caption="; ".join(f"{k}: {', '.join(v['columns'])}" for k, v in report.groups.items()),

@@ -1,25 +1,44 @@
 """How symmetric a dataset is: `symbench data symmetry ID`.
 
-**Image pairs.** Two trajectories are images of each other under a rotation g of the robot's
-group when their scenarios are equal but for the initial yaw, and the yaws differ by g's
-angle (a multiple of 360 / rotation order degrees): the simulator carries a yaw of k whole
-symmetry steps to the first step's climb turned k times (`Climb.from_scenario`), so the
-second trajectory is the first one seen with turned base axes and relabelled legs. For such
-a pair (A, B), `act_on_raw(g, A)` relabels A's legs and turns its base axes the way B's are
-turned; on a perfectly symmetric robot it equals B. Reflections are not paired (no scenario
-field says that one climb is another's mirror image).
+**Image pairs.** Trajectory B is the image of trajectory A under a rotation g of the robot's
+group when B's scenario is A's with every field mapped by g the way the simulator builds a
+twin (`symbench.core.sim.scene.setup.turn_gait`, the one map that `Climb.turned` uses): the
+yaw grows by g's angle (a multiple of 360 / rotation order degrees), the body step direction
+turns back by it, the leg order is relabelled by g's leg permutation, and slope, heading,
+seed and the other fields stay. Then B is A seen with turned base axes and relabelled legs:
+`act_on_raw(g, A)` relabels A's legs and turns its base axes the way B's are turned; on a
+perfectly symmetric robot it equals B. Reflections are not paired (no scenario field says
+that one climb is another's mirror image).
 
-**The error after relabelling**, per column, is the RMS of `g . A - B` over the pairs' rows
-(trajectories of unequal length are compared over the rows both have; quaternions up to
-sign), relative to the column's RMS in B. Columns are gathered into groups: joint states
-(q, qd, qdd), torques (tau) and base (position, orientation, velocities, acceleration); a
-group's relative error is the RMS of its columns' relative errors. Contact and magnet flags
-are compared as the share of rows where a flag differs.
+**How the scenario is read.** A generated dataset stores the simulator's input: its
+direction and leg order are those of the yaw's first symmetry sector, which the simulator
+turns with the base (`scenario_gait`, as `Climb.from_scenario` does), so two scenarios that
+differ only in yaw by g's angle are images. An imported log stores what the robot did
+(`recorded`): the leg order in which its legs stepped and the base-frame direction it
+stepped in, mapped by g as they are. An imported dataset with no image pair read so but some
+read as the simulator's input (an export of a generated dataset) is read as the simulator's;
+the report says which reading it used.
+
+**Alignment.** Two logs of one motion may start at different phases of the gait (one logger
+started earlier). Each pair (images and repeats) is aligned on its lift-offs (a row where a
+leg's magnet flag, else its contact flag, drops from 1 to 0): among the shifts that put the
+first lift-off of a leg in one log on a lift-off of the same leg in the other (and no
+shift), the one whose flags then differ in the fewest rows, ties to the smallest shift, is
+kept when the flags differ in at most `ALIGN_TOLERANCE` of the rows both then have (at least
+half the shorter log). Otherwise the pair could not be aligned: it is compared row by row
+and the report says so. Without known flags every pair is compared row by row.
+
+**The error after relabelling**, per column, is the RMS of `g . A - B` over the pairs'
+aligned rows (quaternions up to sign), relative to the column's RMS in B. Columns are
+gathered into groups: joint states (q, qd, qdd), torques (tau) and base (position,
+orientation, velocities, acceleration); a group's relative error is the RMS of its columns'
+relative errors. Contact and magnet flags are compared as the share of rows where a flag
+differs.
 
 **The noise floor** is what two recordings of the same scenario would differ by:
 
 - `repeats`: when some scenario appears more than once (a real robot's repeated runs), the
-  RMS difference between repeats, per column;
+  RMS difference between repeats (aligned like the images), per column;
 - `high-frequency`: otherwise, the dataset's own sampling noise: per scalar channel, the
   noise sigma estimated from third differences (white noise of sigma gives third differences
   of variance 20 sigma^2; a robust scale, 1.4826 x median absolute deviation, ignores the
@@ -27,9 +46,16 @@ are compared as the share of rows where a flag differs.
   smooth signal's own third differences count as noise here, so this floor is an upper
   bound on the sampling noise.
 
+A floor from repeats tells nothing when the repeats are not one motion: when some repeat
+pair could not be aligned (their flags say they step differently), or when a group's floor
+is at least its image error and at least `UNINFORMATIVE_FLOOR` of the signal (repeats that
+differ as much as images, and as much as the signal itself). Then no verdict is given; the
+report names the scenario fields the dataset lacks that would tell the motions apart.
+
 A dataset whose error is at the float-precision level (`FLOAT_PRECISION`) is exactly
-symmetric (a generated dataset); one whose error is below its floor is symmetric within its
-noise; anything above is a measurable asymmetry, reported as the ratio error / floor.
+symmetric (a generated dataset); one whose error is below an informative floor is symmetric
+within its noise; anything above is a measurable asymmetry, reported as the ratio
+error / floor.
 """
 
 from __future__ import annotations
@@ -47,6 +73,9 @@ from symbench.core.common.atomic import write_bytes_atomic
 from symbench.core.common.errors import SymbenchError
 from symbench.core.data.symmetry.raw_action import act_on_raw, base_map
 from symbench.core.data.views.frames import LegFrames
+from symbench.core.robot.specs import RobotSpec
+from symbench.core.sim.scene.scenario import DIRECTIONS
+from symbench.core.sim.scene.setup import Gait, scenario_gait, turn_gait
 from symbench.core.symmetry.groups import GroupElement, LegGroup
 
 GROUPS: dict[str, tuple[str, ...]] = {
@@ -60,6 +89,33 @@ ANGLE_TOLERANCE_DEG = 1e-6
 MAD_TO_SIGMA = 1.4826  # sigma of a normal distribution / its median absolute deviation
 THIRD_DIFFERENCE_VARIANCE = 20.0  # var(third difference of white noise) / sigma^2
 PLOT_NAME = "symmetry.png"
+READINGS = ("simulator", "recorded")
+READING_NAMES = {  # how `symbench data symmetry` names each reading of the scenarios
+    "simulator": "the simulator's input",
+    "recorded": "recorded (leg order and direction as stepped)",
+}
+ALIGN_TOLERANCE = 0.1  # share of rows whose flags may differ in an aligned pair
+UNINFORMATIVE_FLOOR = 0.5  # a relative floor this large is no noise: the repeats differ
+# the scenario fields that may tell two motions apart, named when repeats evidently differ
+TELLING_FIELDS = ("leg_order", "direction", "seed", "inclination_deg", "heading_deg")
+
+
+@dataclass(frozen=True)
+class Alignment:
+    """How two logs were lined up: row i of the first is row i + `shift` of the second."""
+
+    shift: int = 0
+    aligned: bool = True
+    how: str = "in phase (no lift-off)"
+    flag_mismatch: float | None = None  # share of the compared rows whose flags differ
+
+    def to_dict(self) -> dict[str, Any]:
+        return {
+            "shift_rows": self.shift,
+            "aligned": self.aligned,
+            "how": self.how,
+            "flag_mismatch": self.flag_mismatch,
+        }
 
 
 @dataclass(frozen=True)
@@ -71,6 +127,7 @@ class Pair:
     element: GroupElement
     rows: int
     relative_error: dict[str, float]  # per column group
+    alignment: Alignment = field(default_factory=Alignment)
 
 
 @dataclass
@@ -86,6 +143,13 @@ class SymmetryReport:
     groups: dict[str, dict[str, Any]] = field(default_factory=dict)
     flags: dict[str, float] = field(default_factory=dict)
     plot: str | None = None
+    reading: str = "recorded"  # how the scenarios were read: "simulator" or "recorded"
+    repeat_alignments: list[tuple[int, int, Alignment]] = field(default_factory=list)
+    floor_note: str | None = None  # why the floor from repeats tells nothing, when it does not
+
+    @property
+    def unaligned(self) -> list[Pair]:
+        return [p for p in self.pairs if not p.alignment.aligned]
 
     def to_dict(self) -> dict[str, Any]:
         return {
@@ -93,9 +157,11 @@ class SymmetryReport:
             "robot": self.robot,
             "group": self.group,
             "trajectories": self.trajectories,
+            "scenario_reading": self.reading,
             "image_pairs": len(self.pairs),
             "repeat_pairs": self.repeats,
             "floor": self.floor_source,
+            "floor_note": self.floor_note,
             "groups": self.groups,
             "columns": self.columns,
             "flag_mismatch": self.flags,
@@ -106,8 +172,12 @@ class SymmetryReport:
                     "element": p.element.name,
                     "rows": p.rows,
                     "relative_error": p.relative_error,
+                    "alignment": p.alignment.to_dict(),
                 }
                 for p in self.pairs
+            ],
+            "repeats": [
+                {"a": a, "b": b, "alignment": al.to_dict()} for a, b, al in self.repeat_alignments
             ],
             "plot": self.plot,
         }
@@ -135,33 +205,187 @@ def _same_angle(a: float, b: float) -> bool:
     return min(d, 360.0 - d) < ANGLE_TOLERANCE_DEG
 
 
+GAIT_FIELDS = ("yaw_deg", "direction", "leg_order")
+
+
+def scenario_gait_of(
+    scenario: Mapping[str, Any], reading: str, spec: RobotSpec | None = None
+) -> Gait | None:
+    """The gait (yaw, body direction, swing order) a stored scenario says the robot performed,
+    read as the simulator's input or as recorded; None when it cannot be paired (no yaw, or a
+    leg order that is not a permutation of the legs)."""
+    yaw = scenario.get("yaw_deg")
+    if yaw is None:
+        return None
+    name = scenario.get("direction")
+    direction = None if name is None else DIRECTIONS[name]
+    order = scenario.get("leg_order")
+    order = None if order is None else tuple(int(leg) for leg in order)
+    if reading == "recorded":
+        return (float(yaw), direction, order)
+    if spec is None:
+        raise SymbenchError("reading scenarios as the simulator's input needs the robot's spec")
+    if order is not None and sorted(order) != list(range(spec.n_legs)):
+        return None
+    return scenario_gait(spec, float(yaw), direction, order)
+
+
+def _same_gait(x: Gait, y: Gait) -> bool:
+    (yaw_x, dir_x, order_x), (yaw_y, dir_y, order_y) = x, y
+    assert yaw_x is not None and yaw_y is not None
+    if (dir_x is None) != (dir_y is None) or order_x != order_y:
+        return False
+    return _same_angle(yaw_x, yaw_y) and (dir_x is None or _same_angle(dir_x, dir_y))  # type: ignore[arg-type]
+
+
+@dataclass(frozen=True)
+class Pairing:
+    """Image pairs (a, b, g) with b = g . a, repeat pairs (a, b) of one scenario, and how the
+    scenarios were read."""
+
+    images: list[tuple[int, int, GroupElement]]
+    repeats: list[tuple[int, int]]
+    reading: str
+
+
+def pair_up(
+    scenarios: Sequence[Mapping[str, Any]],
+    ids: Sequence[int],
+    group: LegGroup,
+    frames: LegFrames,
+    reading: str = "auto",
+    spec: RobotSpec | None = None,
+) -> Pairing:
+    """The image and repeat pairs of a dataset's scenarios, read as `reading`: "simulator"
+    (a generated dataset), "recorded" (imported logs) or "auto" (recorded, unless that finds
+    no image pair and the simulator's reading, possible with `spec`, finds some)."""
+    if reading == "auto":
+        recorded = pair_up(scenarios, ids, group, frames, "recorded", spec)
+        if recorded.images or spec is None:
+            return recorded
+        simulated = pair_up(scenarios, ids, group, frames, "simulator", spec)
+        return simulated if simulated.images else recorded
+    if reading not in READINGS:
+        raise SymbenchError(f"scenario reading must be one of {', '.join(READINGS)}: {reading}")
+    rotations = rotation_angles(group, frames)
+    n_legs = group.n_legs
+    by_rest: dict[str, list[int]] = {}
+    by_all: dict[str, list[int]] = {}
+    gaits: dict[int, Gait] = {}
+    for i, scenario in zip(ids, scenarios):
+        by_all.setdefault(_scenario_key(scenario), []).append(int(i))
+        gait = scenario_gait_of(scenario, reading, spec)
+        if gait is not None:
+            gaits[int(i)] = gait
+            by_rest.setdefault(_scenario_key(scenario, GAIT_FIELDS), []).append(int(i))
+    images = []
+    for members in by_rest.values():
+        for a, b in combinations(members, 2):
+            for g, angle in rotations:
+                # b = act_on_raw(g, a) is the simulator's twin of a under g's inverse: leg i
+                # of a is leg g.perm[i] of b
+                order = gaits[a][2]
+                if order is not None and max(order, default=0) >= n_legs:
+                    break
+                if _same_gait(turn_gait(gaits[a], angle, g.perm), gaits[b]):
+                    images.append((a, b, g))
+                    break
+    # in the order of the scenarios but for their yaw, then of the ids: the order in which
+    # pairs were taken before leg orders and directions were mapped (the same sums, bit for bit)
+    rest = {int(i): _scenario_key(s, ("yaw_deg",)) for i, s in zip(ids, scenarios)}
+    rank: dict[str, int] = {}
+    for key in rest.values():
+        rank.setdefault(key, len(rank))
+    position = {int(i): n for n, i in enumerate(ids)}
+    images.sort(key=lambda p: (rank[rest[p[0]]], position[p[0]], position[p[1]]))
+    repeats = [pair for members in by_all.values() for pair in combinations(members, 2)]
+    return Pairing(images, repeats, reading)
+
+
 def find_pairs(
     scenarios: Sequence[Mapping[str, Any]],
     ids: Sequence[int],
     group: LegGroup,
     frames: LegFrames,
+    reading: str = "auto",
+    spec: RobotSpec | None = None,
 ) -> tuple[list[tuple[int, int, GroupElement]], list[tuple[int, int]]]:
     """Image pairs (a, b, g) with b = g . a, and repeat pairs (a, b) of one scenario."""
-    rotations = rotation_angles(group, frames)
-    by_rest: dict[str, list[int]] = {}
-    by_all: dict[str, list[int]] = {}
-    for i, scenario in zip(ids, scenarios):
-        by_all.setdefault(_scenario_key(scenario), []).append(int(i))
-        if scenario.get("yaw_deg") is not None:
-            by_rest.setdefault(_scenario_key(scenario, ("yaw_deg",)), []).append(int(i))
-    yaw = {
-        int(i): float(s["yaw_deg"]) for i, s in zip(ids, scenarios) if s.get("yaw_deg") is not None
-    }
-    images = []
-    for members in by_rest.values():
-        for a, b in combinations(members, 2):
-            turn = (yaw[b] - yaw[a]) % 360.0
-            for g, angle in rotations:
-                if _same_angle(turn, angle):
-                    images.append((a, b, g))
-                    break
-    repeats = [pair for members in by_all.values() for pair in combinations(members, 2)]
-    return images, repeats
+    pairing = pair_up(scenarios, ids, group, frames, reading, spec)
+    return pairing.images, pairing.repeats
+
+
+def _alignment_flag(raw: Mapping[str, np.ndarray], unknown: Sequence[str]) -> str | None:
+    """The flag lift-offs are read from: the magnet's, else the contact's (known ones)."""
+    for flag in ("magnet", "contact"):
+        if flag in raw and flag not in unknown:
+            values = np.asarray(raw[flag])
+            if np.isfinite(values).all():
+                return flag
+    return None
+
+
+def _lift_offs(flags: np.ndarray) -> list[tuple[int, int]]:
+    """(row, leg) of each lift-off: a row where the leg's flag is 0 after a 1."""
+    x = np.asarray(flags).reshape(len(flags), -1) > 0.5
+    rows, legs = np.nonzero(x[:-1] & ~x[1:])
+    return sorted((int(r) + 1, int(leg)) for r, leg in zip(rows, legs))
+
+
+def _overlap(n_a: int, n_b: int, shift: int) -> tuple[slice, slice]:
+    """The rows of a and of b that line up when row i of a is row i + shift of b."""
+    start_a = max(0, -shift)
+    rows = max(0, min(n_a - start_a, n_b - (start_a + shift)))
+    return slice(start_a, start_a + rows), slice(start_a + shift, start_a + shift + rows)
+
+
+def _mismatch(x: np.ndarray, y: np.ndarray) -> float:
+    if not len(x):
+        return 1.0
+    xx = np.asarray(x).reshape(len(x), -1) > 0.5
+    yy = np.asarray(y).reshape(len(y), -1) > 0.5
+    return float(np.mean(np.any(xx != yy, axis=-1)))
+
+
+def align(x: np.ndarray | None, y: np.ndarray | None) -> Alignment:
+    """How flag arrays `x` (T, n) and `y` (T', n) of one motion line up (see the module's
+    docstring): the shift from x's rows to y's, or why there is none."""
+    if x is None or y is None:
+        return Alignment(0, False, "flags unknown: compared row by row")
+    lifts_x, lifts_y = _lift_offs(x), _lift_offs(y)
+    if not lifts_x and not lifts_y:
+        return Alignment(0, True, "in phase (no lift-off)", _mismatch(*_rows(x, y, 0)))
+    first_x: dict[int, int] = {}
+    first_y: dict[int, int] = {}
+    for row, leg in lifts_x:
+        first_x.setdefault(leg, row)
+    for row, leg in lifts_y:
+        first_y.setdefault(leg, row)
+    shifts = {0}
+    shifts |= {row - first_x[leg] for row, leg in lifts_y if leg in first_x}
+    shifts |= {first_y[leg] - row for row, leg in lifts_x if leg in first_y}
+    least = min(len(x), len(y)) / 2
+    best: tuple[float, int] | None = None
+    for shift in sorted(shifts, key=lambda s: (abs(s), s)):
+        sx, sy = _overlap(len(x), len(y), shift)
+        if sx.stop - sx.start < least:
+            continue
+        mismatch = _mismatch(x[sx], y[sy])
+        if best is None or mismatch < best[0]:
+            best = (mismatch, shift)
+    if best is None or best[0] > ALIGN_TOLERANCE:
+        share = _mismatch(*_rows(x, y, 0))
+        return Alignment(
+            0, False, "flags disagree at every shift tried: compared row by row", share
+        )
+    mismatch, shift = best
+    how = "in phase" if shift == 0 else "on the first lift-off"
+    return Alignment(shift, True, how, mismatch)
+
+
+def _rows(x: np.ndarray, y: np.ndarray, shift: int) -> tuple[np.ndarray, np.ndarray]:
+    sx, sy = _overlap(len(x), len(y), shift)
+    return x[sx], y[sy]
 
 
 def _columns(raw: Mapping[str, np.ndarray]) -> list[str]:
@@ -169,10 +393,12 @@ def _columns(raw: Mapping[str, np.ndarray]) -> list[str]:
 
 
 def _difference(
-    moved: Mapping[str, np.ndarray], b: Mapping[str, np.ndarray], column: str, rows: int
-):
-    x = np.asarray(moved[column][:rows], np.float64)
-    y = np.asarray(b[column][:rows], np.float64)
+    moved: Mapping[str, np.ndarray], b: Mapping[str, np.ndarray], column: str, shift: int = 0
+) -> tuple[np.ndarray, np.ndarray]:
+    """moved - b over the rows that line up (row i of moved is row i + shift of b), and b's
+    values there, flattened per row."""
+    x, y = _rows(np.asarray(moved[column], np.float64), np.asarray(b[column], np.float64), shift)
+    rows = len(x)
     if column == "base_quat":  # q and -q are one orientation
         flip = np.sum(x * y, axis=-1, keepdims=True) < 0
         x = np.where(flip, -x, x)
@@ -196,19 +422,35 @@ def measure(
     name: str = "",
     robot: str = "",
     unknown: Sequence[str] = (),
+    reading: str = "auto",
+    spec: RobotSpec | None = None,
 ) -> SymmetryReport:
-    """The symmetry report of raw trajectories by id (`scenarios` in the same id order);
-    flags in `unknown` (declared unknown by an import, stored as 0) are not compared."""
+    """The symmetry report of raw trajectories by id (`scenarios` in the same id order),
+    the scenarios read as `reading` (see `pair_up`; `spec`, else `robot`'s, for the
+    simulator's reading); flags in `unknown` (declared unknown by an import, stored as 0) are
+    not compared."""
+    if spec is None and reading != "recorded":
+        spec = _spec_of(robot)
     ids = list(trajectories)
-    images, repeats = find_pairs(scenarios, ids, group, frames)
+    pairing = pair_up(scenarios, ids, group, frames, reading, spec)
+    images, repeats = pairing.images, pairing.repeats
     if not images:
         raise SymbenchError(
             f"dataset '{name}' has no pair of trajectories that are images of each other "
             f"under {group.name}: no two scenarios are equal but for yaws a multiple of "
-            f"{360 / group.rotation_order:g} degrees apart"
+            f"{360 / group.rotation_order:g} degrees apart (with the direction turned and "
+            f"the leg order relabelled with the base)"
         )
     floor_source = "repeats" if repeats else "high-frequency"
-    report = SymmetryReport(name, robot, group.name, len(ids), floor_source, repeats=len(repeats))
+    report = SymmetryReport(
+        name,
+        robot,
+        group.name,
+        len(ids),
+        floor_source,
+        repeats=len(repeats),
+        reading=pairing.reading,
+    )
     columns = _columns(next(iter(trajectories.values())))
     sq_err = dict.fromkeys(columns, 0.0)
     sq_val = dict.fromkeys(columns, 0.0)
@@ -216,14 +458,16 @@ def measure(
     max_abs = dict.fromkeys(columns, 0.0)
     flag_diff = dict.fromkeys(FLAGS, 0.0)
     flag_rows = 0
-    per_pair_columns: list[tuple[int, int, GroupElement, int, dict[str, float]]] = []
+    per_pair_columns: list[tuple[int, int, GroupElement, int, dict[str, float], Alignment]] = []
     for a, b, g in images:
         moved = act_on_raw(g, trajectories[a], frames)
         target = trajectories[b]
-        rows = min(len(moved["t"]), len(target["t"]))
+        alignment = _align_pair(moved, target, unknown)
+        shift = alignment.shift
+        rows = _rows(moved["t"], target["t"], shift)[0].shape[0]
         rel = {}
         for column in columns:
-            diff, values = _difference(moved, target, column, rows)
+            diff, values = _difference(moved, target, column, shift)
             sq_err[column] += float(np.sum(diff**2))
             sq_val[column] += float(np.sum(values**2))
             count[column] += diff.size
@@ -232,13 +476,20 @@ def measure(
             rel[column] = float(np.sqrt(np.mean(diff**2))) / scale if scale > 0 else 0.0
         for flag in FLAGS:
             if flag in target and flag not in unknown:
-                x = np.asarray(moved[flag][:rows], np.float64)
-                y = np.asarray(target[flag][:rows], np.float64)
+                x, y = _rows(
+                    np.asarray(moved[flag], np.float64), np.asarray(target[flag], np.float64), shift
+                )
                 if np.isfinite(x).all() and np.isfinite(y).all():
                     flag_diff[flag] += float(np.mean(np.any(x != y, axis=-1))) * rows
         flag_rows += rows
-        per_pair_columns.append((a, b, g, rows, rel))
-    floor = _floor(trajectories, repeats, columns, floor_source, {i for p in images for i in p[:2]})
+        per_pair_columns.append((a, b, g, rows, rel, alignment))
+    report.repeat_alignments = [
+        (a, b, _align_pair(trajectories[a], trajectories[b], unknown)) for a, b in repeats
+    ]
+    shifts = {(a, b): al.shift for a, b, al in report.repeat_alignments}
+    floor = _floor(
+        trajectories, repeats, columns, floor_source, {i for p in images for i in p[:2]}, shifts
+    )
     for column in columns:
         scale = np.sqrt(sq_val[column] / max(count[column], 1))
         error = np.sqrt(sq_err[column] / max(count[column], 1))
@@ -249,28 +500,79 @@ def measure(
             "relative_error": float(error / scale) if scale > 0 else 0.0,
             "relative_floor": float(floor[column] / scale) if scale > 0 else 0.0,
         }
+    stepping_differs = any(
+        not al.aligned and al.flag_mismatch is not None for _, _, al in report.repeat_alignments
+    )
+    missing = _missing_fields(scenarios, {i for p in repeats for i in p}, ids, stepping_differs)
     for label, cols in GROUPS.items():
         present = [c for c in cols if c in report.columns]
         if not present:
             continue
         error = _rms([report.columns[c]["relative_error"] for c in present])
         floor_ = _rms([report.columns[c]["relative_floor"] for c in present])
+        note = None
+        if floor_source == "repeats":
+            if stepping_differs:
+                note = (
+                    "repeats step differently (their flags disagree at every shift): the logs "
+                    f"lack a field that tells their motions apart{missing}"
+                )
+            elif floor_ >= error and floor_ >= UNINFORMATIVE_FLOOR:
+                note = (
+                    "repeats differ as much as images: the logs lack a field that tells their "
+                    f"motions apart{missing}"
+                )
+        if note is not None:
+            report.floor_note = note
         report.groups[label] = {
             "columns": present,
             "relative_error": error,
             "relative_floor": floor_,
             "ratio": error / floor_ if floor_ > 0 else None,  # None: a floor of 0
-            "verdict": verdict(error, floor_),
+            "floor_informative": note is None,
+            "verdict": verdict(error, floor_, note),
         }
     report.flags = {f: flag_diff[f] / flag_rows for f in FLAGS if flag_rows and f not in unknown}
-    for a, b, g, rows, rel in per_pair_columns:
+    for a, b, g, rows, rel, alignment in per_pair_columns:
         by_group = {
             label: _rms([rel[c] for c in cols if c in rel])
             for label, cols in GROUPS.items()
             if any(c in rel for c in cols)
         }
-        report.pairs.append(Pair(a, b, g, rows, by_group))
+        report.pairs.append(Pair(a, b, g, rows, by_group, alignment))
     return report
+
+
+def _spec_of(robot: str) -> RobotSpec | None:
+    """`robot`'s spec, or None when no robot of that name is registered."""
+    from symbench.core.robot.specs import load_robot
+
+    try:
+        return load_robot(robot) if robot else None
+    except SymbenchError:
+        return None
+
+
+def _align_pair(
+    a: Mapping[str, np.ndarray], b: Mapping[str, np.ndarray], unknown: Sequence[str]
+) -> Alignment:
+    flag = _alignment_flag(b, unknown)
+    if flag is None or flag not in a:
+        return align(None, None)
+    return align(np.asarray(a[flag]), np.asarray(b[flag]))
+
+
+def _missing_fields(
+    scenarios: Sequence[Mapping[str, Any]], used: set[int], ids: Sequence[int], stepping: bool
+) -> str:
+    """' (leg_order?, seed?)': the fields that could tell the motions of repeats apart and
+    that none of them has; only the leg order when their flags say they step differently and
+    they lack it."""
+    chosen = [s for i, s in zip(ids, scenarios) if int(i) in used]
+    missing = [f for f in TELLING_FIELDS if all(s.get(f) is None for s in chosen)]
+    if stepping and "leg_order" in missing:
+        missing = ["leg_order"]
+    return f" ({', '.join(f + '?' for f in missing)})" if missing else ""
 
 
 def _rms(values: Sequence[float]) -> float:
@@ -283,15 +585,17 @@ def _floor(
     columns: Sequence[str],
     source: str,
     used: set[int],
+    shifts: Mapping[tuple[int, int], int] | None = None,
 ) -> dict[str, float]:
-    """Per column, the RMS difference two recordings of one scenario would show."""
+    """Per column, the RMS difference two recordings of one scenario would show (repeats
+    lined up by `shifts`, rows of a to rows of b)."""
     out = {}
     for column in columns:
         if source == "repeats":
             sq, n = 0.0, 0
             for a, b in repeats:
-                rows = min(len(trajectories[a]["t"]), len(trajectories[b]["t"]))
-                diff, _ = _difference(trajectories[a], trajectories[b], column, rows)
+                shift = (shifts or {}).get((a, b), 0)
+                diff, _ = _difference(trajectories[a], trajectories[b], column, shift)
                 sq, n = sq + float(np.sum(diff**2)), n + diff.size
             out[column] = float(np.sqrt(sq / max(n, 1)))
             continue
@@ -304,9 +608,12 @@ def _floor(
     return out
 
 
-def verdict(relative_error: float, relative_floor: float) -> str:
+def verdict(relative_error: float, relative_floor: float, uninformative: str | None = None) -> str:
+    """The verdict on a group; `uninformative` says why the floor tells nothing, if so."""
     if relative_error < FLOAT_PRECISION:
         return "exact (float precision)"
+    if uninformative:
+        return f"no verdict: {uninformative}"
     if relative_error <= relative_floor:
         return "within noise"
     if relative_floor <= 0:
@@ -316,7 +623,8 @@ def verdict(relative_error: float, relative_floor: float) -> str:
 
 def dataset_symmetry(dataset: Any) -> SymmetryReport:
     """The symmetry report of `dataset`, a loaded `Dataset` (its robot's group and leg
-    frames): what `symbench data symmetry` prints."""
+    frames): what `symbench data symmetry` prints. A generated dataset's scenarios are read
+    as the simulator's input, an imported one's as recorded (see `pair_up`)."""
     from symbench.core.data.storage.files import read_trajectory
 
     spec = dataset.spec
@@ -325,6 +633,7 @@ def dataset_symmetry(dataset: Any) -> SymmetryReport:
         for rec in dataset.metadata["trajectories"]
     }
     unknown = dataset.metadata.get("unknown_columns") or ()
+    imported = dataset.metadata.get("source") == "imported"
     return measure(
         trajectories,
         dataset.scenarios,
@@ -333,6 +642,8 @@ def dataset_symmetry(dataset: Any) -> SymmetryReport:
         dataset.id,
         dataset.robot,
         unknown,
+        reading="auto" if imported else "simulator",
+        spec=spec,
     )
 
 

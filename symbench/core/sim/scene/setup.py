@@ -7,6 +7,7 @@ direction.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -27,6 +28,54 @@ from symbench.core.symmetry.legs import MIRROR_Y, base_map
 SEED_OFFSET = 0.01  # m
 SEED_LINVEL = 0.02  # m/s
 SEED_ANGVEL = 0.05  # rad/s
+
+
+Gait = tuple[float | None, float | None, tuple[int, ...] | None]
+"""A climb's base yaw (degrees about the surface normal, 0: base x up the slope), body step
+direction (degrees from the base x axis) and swing order (leg labels, in stepping order), as
+the robot performs them; None where unknown (an imported log need not say)."""
+
+
+def turn_gait(gait: Gait, angle_deg: float, new_label: Sequence[int]) -> Gait:
+    """`gait` with the base turned by `angle_deg` about the surface normal and the legs
+    relabelled, leg i's part played by leg `new_label[i]`: the yaw grows by the angle, the body
+    direction turns back by it (the same direction in the world) and the swing order follows
+    the labels; heading, slope and seed stay. The one map of a climb's gait under a rotation
+    of the robot: `Climb.turned` (the simulator's twins) and the image pairs of `symbench data
+    symmetry` both use it. None (unknown) stays None."""
+    yaw, direction, order = gait
+    return (
+        None if yaw is None else yaw + angle_deg,
+        None if direction is None else direction - angle_deg,
+        None if order is None else tuple(new_label[leg] for leg in order),
+    )
+
+
+def _steps(spec: RobotSpec, steps: int) -> tuple[float, list[int]]:
+    """The angle and relabelling of `steps` symmetry steps (the base turned counter-clockwise,
+    leg i's part played by leg i - steps x shift)."""
+    k = spec.symmetry_shift * steps
+    return spec.symmetry_angle_deg * steps, [(leg - k) % spec.n_legs for leg in range(spec.n_legs)]
+
+
+def scenario_gait(
+    spec: RobotSpec,
+    yaw_deg: float,
+    direction_deg: float | None,
+    order: Sequence[int] | None,
+) -> Gait:
+    """The gait the simulator performs for a scenario's yaw, direction and leg order
+    (`Climb.from_scenario`): a yaw of k whole symmetry steps plus a remainder is the
+    remainder's gait turned k times, so the scenario's direction and leg order are those of
+    the yaw's first sector, turned back with the base. No leg order is the default one."""
+    step = spec.symmetry_angle_deg
+    k = int(np.floor(round(yaw_deg % 360.0, 9) / step))
+    resolved = (
+        default_order(spec.n_legs) if order is None else check_order(tuple(order), spec.n_legs)
+    )
+    gait = (yaw_deg - k * step, direction_deg, resolved)
+    _, direction, turned = turn_gait(gait, *_steps(spec, k))
+    return yaw_deg, direction, turned
 
 
 @dataclass(frozen=True)
@@ -50,31 +99,22 @@ class Climb:
         first step the direction is the body frame's.
         """
         spec = spec or load_robot(scenario.robot)
-        step = spec.symmetry_angle_deg
-        k = int(np.floor(round(scenario.yaw_deg % 360.0, 9) / step))
-        base = cls(
-            spec,
-            Arena(scenario.inclination_deg, scenario.heading_deg),
-            scenario.yaw_deg - k * step,
-            scenario.direction_deg,
-            scenario.leg_order,
-            scenario.seed,
+        _, direction, order = scenario_gait(
+            spec, scenario.yaw_deg, scenario.direction_deg, scenario.leg_order
         )
-        return replace(base.turned(k), yaw_deg=scenario.yaw_deg)
+        assert direction is not None  # a scenario always names its direction
+        arena = Arena(scenario.inclination_deg, scenario.heading_deg)
+        return cls(spec, arena, scenario.yaw_deg, direction, order, scenario.seed)
 
     def turned(self, steps: int = 1) -> Climb:
         """The same climb with the base turned by `steps` symmetry steps and the legs
         relabelled: the body direction turns back by the same angle (the same direction in
         the world) and the leg order follows the labels."""
-        spec = self.spec
-        k, angle = spec.symmetry_shift * steps, spec.symmetry_angle_deg * steps
-        order = tuple((leg - k) % spec.n_legs for leg in self.leg_order)
-        return replace(
-            self,
-            yaw_deg=self.yaw_deg + angle,
-            direction_deg=self.direction_deg - angle,
-            order=order,
+        yaw, direction, order = turn_gait(
+            (self.yaw_deg, self.direction_deg, self.leg_order), *_steps(self.spec, steps)
         )
+        assert yaw is not None and direction is not None  # known in, known out
+        return replace(self, yaw_deg=yaw, direction_deg=direction, order=order)
 
     def reflected(self, g: GroupElement) -> Climb:
         """The mirror image of this climb under the reflection element `g`, legs relabelled.
