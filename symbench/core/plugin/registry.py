@@ -110,6 +110,9 @@ def model(name: str, backend: str = "torch", host: PluginHost | None = None) -> 
     return table[f"{name}/{backend}"]
 
 
+model_entry = model  # its name in the public API (`from symbench import model_entry`)
+
+
 def robot(name: str, host: PluginHost | None = None) -> RobotEntry:
     host = host or get_host()
     return _find("robot", name, collect("robots", host), host)
