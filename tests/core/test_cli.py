@@ -57,6 +57,18 @@ def test_help_lists_core_commands():
     assert {"list", "plugins", "run", "bench", "data", "sim"} <= set(CORE_COMMANDS)
 
 
+def test_python_dash_m_symbench_is_the_same_command():
+    env = dict(os.environ, SYMBENCH_PLUGINS="none")
+    module = [sys.executable, "-m", "symbench"]
+    for args in (["--help"], ["--version"]):
+        result = subprocess.run([*module, *args], capture_output=True, text=True, env=env)
+        assert result.returncode == 0, result.stderr
+        assert result.stdout == run(*args).stdout  # prog name `symbench`, not `__main__.py`
+    assert result.stdout.startswith("symbench, version ")
+    result = subprocess.run([*module, "list", "--bogus"], capture_output=True, text=True, env=env)
+    assert result.returncode == 2 and "Usage: symbench list" in result.stderr
+
+
 def test_plugins_and_list_give_json(builtins):
     result = run("plugins")
     assert result.returncode == 0, result.stderr

@@ -11,6 +11,7 @@ import json
 import re
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
@@ -25,8 +26,12 @@ from symbench import (
     hookimpl,
 )
 from symbench.core.cli import build_cli
+from symbench.core.common.lazy_names import LazyNames
+from symbench.core.data.views import schema
+from symbench.core.plugin import registry
 from symbench.core.plugin.host import PluginHost, set_host
 
+STUB = Path(symbench.__file__).with_suffix(".pyi")
 HEAVY = ("torch", "jax", "flax", "mujoco", "dm_control", "pandas", "pyarrow")
 
 
@@ -36,6 +41,31 @@ def test_every_public_name_resolves_and_is_documented():
         assert getattr(symbench, name) is not None, name
         documented = re.search(rf"(?<![\w.]){re.escape(name)}(?!\w)", symbench.__doc__)
         assert documented, f"{name} is missing from the module docstring"
+
+
+def test_the_stub_is_the_one_list_of_public_names():
+    """`__init__.pyi` declares each name once, grouped by role; `__all__`, the docstring's
+    roles and what loads on first use all come from it."""
+    names = LazyNames.from_stub("symbench", STUB)
+    assert symbench.__all__ == names.all
+    assert [n for role in names.roles.values() for n in role] == names.all
+    assert "Writing evaluators" in names.roles and "track" in names.roles["Writing evaluators"]
+    assert {"__version__", "hookimpl", "model_entry", "schema"} <= set(names.all)
+    assert symbench.model_entry is registry.model and symbench.schema is schema
+
+
+@pytest.mark.parametrize(
+    ("stub", "problem"),
+    [
+        ("from .a import b as b\nfrom .c import b as b\n", "'b' is declared twice"),
+        ("from .a import b as b\nc = 1\n", "2: not a `from .module import name` line"),
+        ("from symbench.a import b as b\n", "1: not a `from .module import name` line"),
+    ],
+)
+def test_a_wrong_stub_fails_when_read(tmp_path, stub, problem):
+    (tmp_path / "__init__.pyi").write_text(stub)
+    with pytest.raises(ValueError, match=re.escape(problem)):
+        LazyNames.from_stub("pkg", tmp_path / "__init__.pyi")
 
 
 def test_an_unknown_name_is_an_attribute_error():

@@ -44,7 +44,9 @@ def test_the_wheel_holds_every_module_and_every_robot_file(installed):
     assert {f"{r}/robot.toml" for r in BUILT_IN} <= set(robot_files)
     missing = [f for f in robot_files if f"{SPECS_IN_WHEEL}/{f}" not in names]
     assert not missing, f"robots/ files missing from the wheel: {missing}"
-    modules = [f"symbench/{f}" for f in files_under(ROOT / "symbench") if f.endswith(".py")]
+    modules = [
+        f"symbench/{f}" for f in files_under(ROOT / "symbench") if f.endswith((".py", ".pyi"))
+    ]
     missing = [m for m in modules if m not in names]
     assert not missing, f"missing from the wheel (list the package in pyproject.toml): {missing}"
 

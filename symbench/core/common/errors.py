@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import difflib
 from collections.abc import Iterable
+from typing import Any
 
 
 class SymbenchError(Exception):
@@ -26,7 +27,7 @@ class UnknownNameError(SymbenchError, KeyError):
         super().__init__(f"unknown {what} '{name}'{hint} (known: {known})")
 
 
-def lookup(what: str, name: str, table: dict):
+def lookup(what: str, name: str, table: dict[str, Any]) -> Any:
     """Return table[name] or raise UnknownNameError listing the closest valid names."""
     try:
         return table[name]

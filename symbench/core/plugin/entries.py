@@ -47,7 +47,7 @@ def _check_name(kind: str, name: object) -> None:
         )
 
 
-def _check_choice(kind: str, name: str, field: str, value: object, valid: tuple) -> None:
+def _check_choice(kind: str, name: str, field: str, value: object, valid: tuple[str, ...]) -> None:
     if value not in valid:
         raise InvalidEntryError(
             f"{kind} '{name}': {field} {value!r} is not one of {', '.join(valid)}"
@@ -134,7 +134,7 @@ class EvaluatorEntry:
     """
 
     name: str
-    evaluate: Callable[..., dict]
+    evaluate: Callable[..., dict[str, Any]]
     description: str = ""
     needs: tuple[str, ...] = ()
     trainings: Callable[..., Sequence[tuple[str | None, str, str]]] | None = None

@@ -107,19 +107,26 @@ def model(name: str, backend: str = "torch", host: PluginHost | None = None) -> 
         raise SymbenchError(
             f"model '{name}' has no '{backend}' backend (it has {', '.join(backends)})"
         )
-    return table[f"{name}/{backend}"]
+    entry: ModelEntry = table[f"{name}/{backend}"]
+    return entry
+
+
+model_entry = model  # its name in the public API (`from symbench import model_entry`)
 
 
 def robot(name: str, host: PluginHost | None = None) -> RobotEntry:
     host = host or get_host()
-    return _find("robot", name, collect("robots", host), host)
+    entry: RobotEntry = _find("robot", name, collect("robots", host), host)
+    return entry
 
 
 def evaluator(name: str, host: PluginHost | None = None) -> EvaluatorEntry:
     host = host or get_host()
-    return _find("evaluator", name, collect("evaluators", host), host)
+    entry: EvaluatorEntry = _find("evaluator", name, collect("evaluators", host), host)
+    return entry
 
 
 def split(name: str, host: PluginHost | None = None) -> SplitEntry:
     host = host or get_host()
-    return _find("split", name, collect("splits", host), host)
+    entry: SplitEntry = _find("split", name, collect("splits", host), host)
+    return entry

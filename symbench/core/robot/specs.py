@@ -165,7 +165,7 @@ class RobotSpec:
         return self.base_mass + per_leg * sum(map(self.leg_mass_scale, range(self.n_legs)))
 
 
-def _get(table: dict, key: str, where: str) -> Any:
+def _get(table: dict[str, Any], key: str, where: str) -> Any:
     if key not in table:
         raise SymbenchError(f"{where}: missing '{key}'")
     return table[key]
@@ -216,11 +216,11 @@ def _limits(lower: Any, upper: Any, where: str) -> tuple[tuple[float, ...], tupl
     return lo, hi
 
 
-def _positives(table: dict, keys: tuple[str, ...], where: str) -> list[float]:
+def _positives(table: dict[str, Any], keys: tuple[str, ...], where: str) -> list[float]:
     return [_positive(_get(table, k, where), f"{where} {k}") for k in keys]
 
 
-def _parse_leg(raw: dict, src: str) -> LegSpec:
+def _parse_leg(raw: dict[str, Any], src: str) -> LegSpec:
     leg, ankle, stance = (_get(raw, k, src) for k in ("leg", "ankle", "stance"))
     w = f"{src} [leg]"
     lengths = {
@@ -264,7 +264,7 @@ def _parse_leg(raw: dict, src: str) -> LegSpec:
     )
 
 
-def parse_spec(raw: dict, source: str = "robot.toml") -> RobotSpec:
+def parse_spec(raw: dict[str, Any], source: str = "robot.toml") -> RobotSpec:
     """Validate a parsed robot.toml; every error names the file and the entry."""
     name = str(_get(raw, "name", source))
     n_legs = int(_get(raw, "n_legs", source))
@@ -340,7 +340,7 @@ def _asymmetry(table: Any, source: str) -> float:
     return _non_negative(table.get("leg0_heavier", 0.0), where + " leg0_heavier")
 
 
-def _read_toml(spec_dir: Path) -> tuple[dict, Path]:
+def _read_toml(spec_dir: Path) -> tuple[dict[str, Any], Path]:
     path = Path(spec_dir) / "robot.toml"
     if not path.is_file():
         raise SymbenchError(f"robot spec {path} does not exist")

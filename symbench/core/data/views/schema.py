@@ -17,8 +17,8 @@ from enum import Enum
 import numpy as np
 
 from symbench.core.common.errors import SymbenchError, UnknownNameError
-from symbench.core.data.storage.columns import JOINTS
-from symbench.core.plugin.entries import VARIANTS
+from symbench.core.data.storage.columns import JOINTS as JOINTS  # re-exported: joint names
+from symbench.core.plugin.entries import VARIANTS as VARIANTS  # re-exported: the variants
 from symbench.core.plugin.entries import (
     VIEWS as VIEWS,  # re-exported: the views a model may consume
 )
@@ -118,7 +118,7 @@ class Layout:
             start += f.size
         raise UnknownNameError(f"feature of layout {self.name}", name, self.feature_names)
 
-    def select(self, x, names: Sequence[str]):
+    def select(self, x: np.ndarray, names: Sequence[str]) -> np.ndarray:
         """The columns of the named features, concatenated in the order given."""
         idx = np.concatenate([np.arange(self.size)[self.slice(n)] for n in names])
         return x[..., idx]

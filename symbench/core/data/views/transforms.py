@@ -43,7 +43,8 @@ def base_in_leg_frames(raw: Raw, rows: np.ndarray, frames: LegFrames) -> dict[st
 
     def in_legs(world: np.ndarray) -> np.ndarray:
         base = np.einsum("nji,nj->ni", r_wb, world)  # R_bw v_w
-        return np.einsum("lji,nj->nli", frames.rotations, base)  # R_b_li^T v_b
+        in_leg: np.ndarray = np.einsum("lji,nj->nli", frames.rotations, base)  # R_b_li^T v_b
+        return in_leg
 
     gravity = np.broadcast_to(GRAVITY_WORLD, (len(rows), 3))
     return {

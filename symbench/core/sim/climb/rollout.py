@@ -23,6 +23,7 @@ from __future__ import annotations
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -31,11 +32,14 @@ from symbench.core.sim.climb.kernel import climb_steps
 from symbench.core.sim.contact.failure import Detachment, describe_fall
 from symbench.core.sim.contact.kernel import HOLDING, QP_FAILED
 from symbench.core.sim.control.controller import ControlOutput, WholeBodyController
-from symbench.core.sim.gait.plan import STANCE, GaitTargets
+from symbench.core.sim.gait.plan import STANCE, GaitPlan, GaitTargets
 from symbench.core.sim.raw import RAW_COLUMNS, column_shape, validate_raw
 from symbench.core.sim.scene.mjcf import SOLE_MARGIN
 from symbench.core.sim.scene.scenario import Scenario
 from symbench.core.sim.scene.setup import Climb
+
+if TYPE_CHECKING:
+    from symbench.core.robot.specs import RobotSpec
 
 
 @dataclass
@@ -173,7 +177,7 @@ class _Stats:
         self.tau = np.zeros((n_rows, n_legs, 3))
         self.arrays = (self.base, self.swing, self.tau)
 
-    def summary(self, spec, data, plan, rows: int) -> dict[str, float]:
+    def summary(self, spec: RobotSpec, data: Any, plan: GaitPlan, rows: int) -> dict[str, float]:
         """The metrics over the first `rows` control steps."""
         base = np.linalg.norm(self.base[:rows, 0] - self.base[:rows, 1], axis=1)
         swinging = self.swing[:rows]

@@ -1,5 +1,5 @@
 """The whole-body controller's arithmetic, compiled (numba): the QP's data from the state,
-and the servo command from the QP's answer.
+and the servo command from the QP's answer (`servo_command`, in `servo`).
 
 Why compiled: the controller runs at every 1 kHz physics step, and as numpy code its
 ~150 calls on 3-vectors and 3 x 3 blocks cost ten times MuJoCo's own step. Here each leg's
@@ -19,8 +19,8 @@ import numpy as np
 from numba import njit
 
 from symbench.core.sim.climb import native
-from symbench.core.sim.control.kinematics import leg_ik_into
 from symbench.core.sim.control.qp import solve_in_place
+from symbench.core.sim.control.servo import servo_command
 from symbench.core.sim.gait.kernel import RELEASE, SWING, TOUCHDOWN, gait_targets
 
 QP_INF = 1e30  # an absent bound (the QP solver's infinity)
@@ -260,73 +260,6 @@ def qp_problem(
                     cons[row, 9 + 3 * j + k] = -jac[i, k, 6 + r] if j == i else 0.0
             lower[row] = -tau_max[r] - mc_h[6 + 3 * i + r]
             upper[row] = tau_max[r] - mc_h[6 + 3 * i + r]
-
-
-@njit(cache=True)
-def servo_command(
-    x,
-    cons,
-    mc_h_tau,
-    jac,
-    legs,
-    inv_damped,
-    ankle_ref,
-    base_ref,
-    sole_vel,
-    swing,
-    r_ref,
-    rot_bl,
-    org_bl,
-    lengths,
-    kp,
-    kd,
-    limit,
-    command,
-    tau,
-):
-    """The servo input u = tau_ff + Kp q_ref + Kd qd_ref and the torque it applies now,
-    clip(u - Kp q - Kd qd); joint references from closed-form leg IK of the planned base
-    and the ankle targets (stance: where the ankle is; swing: the spline), velocity
-    references by damped least squares (safe at a stretched leg)."""
-    n = legs.shape[0]
-    nx = x.shape[0]
-    tau_rows = cons.shape[0] - 3 * n
-    target = np.empty(3)
-    target_vel = np.empty(3)
-    rel = np.empty(3)
-    in_leg = np.empty(3)
-    q_ref = np.empty(3)
-    jtv = np.empty(3)
-    for i in range(n):
-        for k in range(3):
-            if i == swing:
-                target[k] = ankle_ref[k]
-                target_vel[k] = -base_ref[1, k] + sole_vel[k]
-            else:
-                target[k] = legs[i, 0, k]
-                target_vel[k] = -base_ref[1, k]
-        for k in range(3):
-            rel[k] = 0.0
-        for c in range(3):
-            for k in range(3):
-                rel[c] += (target[k] - base_ref[0, k]) * r_ref[k, c]
-        for c in range(3):
-            in_leg[c] = 0.0
-            for k in range(3):
-                in_leg[c] += (rel[k] - org_bl[i, k]) * rot_bl[i, k, c]
-        leg_ik_into(in_leg[0], in_leg[1], in_leg[2], lengths, q_ref)
-        for c in range(3):
-            jtv[c] = jac[i, 0, 6 + c] * target_vel[0] + jac[i, 1, 6 + c] * target_vel[1]
-            jtv[c] += jac[i, 2, 6 + c] * target_vel[2]
-        for r in range(3):
-            s = mc_h_tau[3 * i + r]
-            for k in range(nx):
-                s += cons[tau_rows + 3 * i + r, k] * x[k]
-            qd_ref = inv_damped[i, r, 0] * jtv[0] + inv_damped[i, r, 1] * jtv[1]
-            qd_ref += inv_damped[i, r, 2] * jtv[2]
-            u = s + kp * q_ref[r] + kd * qd_ref
-            command[i, r] = u
-            tau[i, r] = min(max(u - kp * legs[i, 2, r] - kd * legs[i, 3, r], -limit), limit)
 
 
 @njit(cache=True)
