@@ -21,7 +21,7 @@ Writing splits
 Reading a preset's sizes, budgets and horizons (`symbench presets`)
     Preset, PRESETS, preset
 Using symbench from Python (a plugin's own tests)
-    model_entry, load_robot, TrainConfig, train
+    model_entry, load_robot, TrainConfig, Converge, Cosine, Paper, train
 The equivariance kit is `symbench.testing` (also a pytest plugin); `__version__` is the
 installed version.
 """
@@ -86,6 +86,9 @@ _PUBLIC: dict[str, str] = {
     "model_entry": "symbench.core.plugin.registry:model",
     "load_robot": "symbench.core.robot.specs:load_robot",
     "TrainConfig": "symbench.core.training.loop:TrainConfig",
+    "Converge": "symbench.core.config.protocols:Converge",
+    "Cosine": "symbench.core.config.protocols:Cosine",
+    "Paper": "symbench.core.config.protocols:Paper",
     "train": "symbench.core.training.loop:train",
 }
 
@@ -95,6 +98,8 @@ __all__ = [
     "PRESETS",
     "VARIANTS",
     "VIEWS",
+    "Converge",
+    "Cosine",
     "EvaluationContext",
     "EvaluatorEntry",
     "InvalidEntryError",
@@ -102,6 +107,7 @@ __all__ = [
     "LegGroup",
     "ModelDims",
     "ModelEntry",
+    "Paper",
     "Preset",
     "RobotEntry",
     "Scenario",
@@ -163,6 +169,7 @@ if TYPE_CHECKING:  # what type checkers and editors see
     from symbench.core.common.errors import SymbenchError
     from symbench.core.common.lazy import Lazy
     from symbench.core.config.presets import PRESETS, Preset, preset
+    from symbench.core.config.protocols import Converge, Cosine, Paper
     from symbench.core.data.splits import SplitContext, carve_validation
     from symbench.core.data.symmetry.raw_action import (
         act_on_raw,

@@ -133,4 +133,5 @@ def configuration(spec: RunSpec, content_hash: str | None = None) -> dict[str, A
     }
     if content_hash is None:
         del wanted["dataset content hash"]
-    return json.loads(json.dumps(wanted))  # as a record holds them: tuples become lists
+    recorded: dict[str, Any] = json.loads(json.dumps(wanted))  # tuples become lists
+    return recorded
