@@ -16,13 +16,15 @@ from typing import TYPE_CHECKING
 
 from symbench.core.common.errors import SymbenchError, UnknownNameError
 from symbench.core.config.presets import dataset_id, parse_dataset_id
+from symbench.core.data.dataset import Dataset, load_dataset, missing_hint
+from symbench.core.data.generation.generate import ensure_dataset as ensure
+from symbench.core.data.storage.metadata import METADATA, dataset_dir, read_metadata
 from symbench.core.data.views.schema import VARIANTS
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import ModelEntry
 from symbench.core.runs.results import IDENTIFIER, run_key
 
 if TYPE_CHECKING:
-    from symbench.core.data.dataset import Dataset
     from symbench.core.training.config import TrainConfig
 
 # The full evaluation (sweeps, boards); `symbench run` starts with the first-result set, which
@@ -115,9 +117,6 @@ def default_preset(did: str | None) -> str:
 def dataset_robot(did: str) -> str:
     """The robot whose trajectories dataset `did` holds: its metadata's when it is cached, a
     standard id's robot otherwise; an error for any other id missing from the cache."""
-    from symbench.core.data.dataset import missing_hint
-    from symbench.core.data.storage.metadata import METADATA, dataset_dir, read_metadata
-
     if not re.match(IDENTIFIER, did) or len(did) > 100:
         raise SymbenchError(
             f"dataset id '{did}' cannot name a result record (at most 100 letters, digits, "
@@ -144,9 +143,6 @@ def resolve_robot(robot: str | None, did: str) -> str:
 def ensure_dataset(spec: RunSpec) -> Dataset:
     """The run's dataset: a standard one is generated first when it is not in the cache (or
     its robot spec changed); any other (imported) must be in the cache."""
-    from symbench.core.data.dataset import load_dataset
-    from symbench.core.data.generation.generate import ensure_dataset as ensure
-
     did = spec.dataset_id
     if is_standard(did):
         robot, grid = parse_dataset_id(did)  # type: ignore[misc]  # standard: parsed
