@@ -78,4 +78,6 @@ from .core.config.presets import Preset as Preset, PRESETS as PRESETS, preset as
 # Using symbench from Python (a plugin's own tests)
 from .core.plugin.registry import model_entry as model_entry
 from .core.robot.specs import load_robot as load_robot
-from .core.training.loop import TrainConfig as TrainConfig, train as train
+from .core.training.config import TrainConfig as TrainConfig
+from .core.training.loop import train as train
+from .core.config.protocols import Converge as Converge, Cosine as Cosine, Paper as Paper

@@ -17,10 +17,12 @@ import symbench
 from symbench.core.common.errors import SymbenchError, UnknownNameError
 from symbench.core.config.cli import SECTIONS, _cell
 from symbench.core.config.presets import PRESETS, ClosedLoop, Evaluation, SampleEfficiency, Training
+from symbench.core.config.protocols import Converge, Cosine, Paper
 from symbench.core.data import load_dataset
 from symbench.core.plugin import registry
 from symbench.core.runs.evaluation import EvaluationContext
-from symbench.core.runs.runner import RunSpec, check_names, train_config
+from symbench.core.runs.run_config import check_names, train_config
+from symbench.core.runs.spec import RunSpec
 from symbench.plugins.evaluators import closed_loop, invariance, sample_efficiency
 from symbench.plugins.splits import symbench_splits
 
@@ -165,22 +167,22 @@ def test_a_wrong_presets_command_line_is_one_line():
 def test_the_run_takes_its_budgets_from_the_preset(monkeypatch):
     spec = RunSpec(model="sdnn", robot="hexa", preset="smoke", progress=False)
     config = train_config(spec)
-    assert (config.protocol, config.max_steps, config.eval_every, config.patience) == (
-        "converge",
-        30,
-        10,
-        2,
-    )
+    assert config.schedule == Converge(max_steps=30, eval_every=10, patience=2)
+    assert config.unused == Paper(max_epochs=3)  # kept in the record's flat layout, unused
     with_preset(monkeypatch, "smoke", training=Training(700, 70, 3, max_epochs=7))
     config = train_config(spec)
-    assert (config.max_steps, config.eval_every, config.patience) == (700, 70, 3)
+    assert config.schedule == Converge(700, 70, 3)
     assert config.val_stride == 1
     with_preset(monkeypatch, "smoke", training=Training(700, 70, 3, max_epochs=7, val_stride=4))
     assert train_config(spec).val_stride == 4
-    assert train_config(dataclasses.replace(spec, max_steps=140)).max_steps == 140  # --max-steps
+    longer = train_config(dataclasses.replace(spec, max_steps=140))  # --max-steps
+    assert longer.schedule == Converge(140, 70, 3)
     paper = dataclasses.replace(spec, protocol="paper")
-    assert train_config(paper).max_epochs == 7
-    assert train_config(dataclasses.replace(paper, max_epochs=2)).max_epochs == 2  # --max-epochs
+    assert train_config(paper).schedule == Paper(max_epochs=7)
+    assert train_config(paper).unused == Converge(700, 70, 3)
+    shorter = train_config(dataclasses.replace(paper, max_epochs=2))  # --max-epochs
+    assert shorter.schedule == Paper(max_epochs=2)
+    assert train_config(dataclasses.replace(spec, protocol="cosine")).schedule == Cosine(700, 70, 3)
 
 
 @pytest.mark.parametrize(

@@ -12,6 +12,7 @@ from model_sizes import SMALL
 from safetensors import safe_open
 from safetensors.numpy import save_file
 
+from symbench.core.config.protocols import Converge
 from symbench.core.plugin import registry
 from symbench.core.training.checkpoints import CheckpointError, checkpoint_sha256
 from symbench.core.training.loop import TrainConfig, train
@@ -19,7 +20,8 @@ from symbench.core.training.resume import BEST_DIR, PREVIOUS, RESUME, Checkpoint
 from symbench.core.training.trained_model import TENSORS, TrainedModel
 
 WHOLE, FIRST = (
-    TrainConfig(max_steps=n, eval_every=4, hyper=SMALL["sdnn"], progress=False) for n in (16, 8)
+    TrainConfig(schedule=Converge(max_steps=n, eval_every=4), hyper=SMALL["sdnn"], progress=False)
+    for n in (16, 8)
 )
 DAMAGED = "damaged (its content does not match its SHA-256)"
 

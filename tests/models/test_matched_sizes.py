@@ -9,7 +9,8 @@ import pytest
 from symbench.core.common.errors import SymbenchError
 from symbench.core.data.views.model_dims import dims_for
 from symbench.core.plugin import registry
-from symbench.core.runs.runner import RunSpec, train_config
+from symbench.core.runs.run_config import train_config
+from symbench.core.runs.spec import RunSpec
 from symbench.core.training import sizes
 from symbench.core.training.sizes import matched_widths, parameter_count, scaled_widths
 

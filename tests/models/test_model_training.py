@@ -7,17 +7,20 @@ import pytest
 from model_sizes import BACKENDS, MODELS, SMALL
 
 from symbench.core.common.errors import SymbenchError
-from symbench.core.config.protocols import rate_scale
+from symbench.core.config.protocols import Converge, Cosine, Paper, rate_scale, schedule_class
 from symbench.core.plugin import registry
 from symbench.core.training.loop import TrainConfig, batch_order, train
 from symbench.core.training.trained_model import TrainedModel
 
 
-def converge(checks: int, every: int, **kwargs) -> TrainConfig:
-    """The converge protocol with a budget of `checks` validation checks `every` steps apart
-    (patience 10 unless given: the budget ends these short trainings)."""
-    options = {"patience": 10, "progress": False, **kwargs}
-    return TrainConfig(max_steps=checks * every, eval_every=every, **options)
+def converge(
+    checks: int, every: int, patience: int = 10, protocol: str = "converge", **kwargs
+) -> TrainConfig:
+    """The converge (or cosine) protocol with a budget of `checks` validation checks `every`
+    steps apart (patience 10 unless given: the budget ends these short trainings)."""
+    steps = Cosine if protocol == "cosine" else Converge
+    schedule = steps(max_steps=checks * every, eval_every=every, patience=patience)
+    return TrainConfig(schedule=schedule, **{"progress": False, **kwargs})
 
 
 @pytest.mark.parametrize("backend", BACKENDS)
@@ -63,7 +66,7 @@ def test_interrupted_training_resumes_exactly(backend, protocol, smoke, tmp_path
         config, shorter = (converge(n, 3, hyper=SMALL["sdnn"], protocol=protocol) for n in (4, 2))
     else:
         config, shorter = (
-            TrainConfig(protocol="paper", max_epochs=n, hyper=SMALL["sdnn"], progress=False)
+            TrainConfig(schedule=Paper(max_epochs=n), hyper=SMALL["sdnn"], progress=False)
             for n in (4, 2)
         )
     whole = train(entry, tr, va, config)
@@ -116,10 +119,7 @@ def test_the_paper_stopping_rule(ratio, patience, epochs, stopped_by, smoke):
         tr,
         va,
         TrainConfig(
-            protocol="paper",
-            max_epochs=5,
-            stop_ratio=ratio,
-            stop_patience=patience,
+            schedule=Paper(max_epochs=5, stop_ratio=ratio, stop_patience=patience),
             hyper=SMALL["sdnn"],
             progress=False,
         ),
@@ -170,7 +170,25 @@ def test_val_stride_checks_every_nth_validation_row_and_leaves_older_configs_alo
 
 def test_an_unknown_protocol_is_refused():
     with pytest.raises(SymbenchError, match="unknown training protocol 'fast'"):
-        TrainConfig(protocol="fast")
+        schedule_class("fast")
+
+
+def test_a_protocol_setting_given_flat_names_the_typed_form():
+    with pytest.raises(SymbenchError, match=r"not TrainConfig\(max_epochs=\.\.\.\) but .*Paper"):
+        TrainConfig(max_epochs=3)
+    with pytest.raises(SymbenchError, match="other protocol family"):
+        TrainConfig(schedule=Converge(), unused=Cosine())
+
+
+def test_the_flat_layout_lists_both_families_in_the_order_records_keep():
+    config = TrainConfig(schedule=Paper(max_epochs=7), unused=Converge(30, 10, 2), val_stride=2)
+    flat = config.to_dict()
+    assert list(flat) == [
+        "seed", "batch_size", "protocol", "max_steps", "eval_every", "patience", "val_stride",
+        "max_epochs", "stop_ratio", "stop_patience", "learning_rate", "hyper", "compile",
+    ]  # fmt: skip
+    assert (flat["protocol"], flat["max_steps"], flat["max_epochs"]) == ("paper", 30, 7)
+    assert TrainConfig.from_dict(flat) == config
 
 
 def test_batch_order_is_a_seeded_permutation_per_epoch():
@@ -211,11 +229,18 @@ def test_bad_data_is_named(smoke):
     entry = registry.model("sdnn", "torch")
     tr, va = smoke
     with pytest.raises(SymbenchError, match="consumes the leg_grouped/acc view"):
-        train(entry, tr["vector"], va["vector"], TrainConfig(max_epochs=1, progress=False))
+        train(
+            entry,
+            tr["vector"],
+            va["vector"],
+            TrainConfig(schedule=Paper(max_epochs=1), progress=False),
+        )
     bad = tr["leg_grouped"].take(np.arange(64))
     bad.inputs["x"][0, 0, 0] = np.nan
     with pytest.raises(SymbenchError, match="NaN"):
-        train(entry, bad, va["leg_grouped"], TrainConfig(max_epochs=1, progress=False))
+        train(
+            entry, bad, va["leg_grouped"], TrainConfig(schedule=Paper(max_epochs=1), progress=False)
+        )
 
 
 def test_cosine_decays_the_rate_from_the_models_to_zero_over_the_budget():

@@ -12,6 +12,7 @@ from cli_invoke import error_line, invoke
 from synthetic_raw import write_logs
 
 from symbench.core.common.errors import SymbenchError
+from symbench.core.config.protocols import Converge
 from symbench.core.data import load_dataset
 from symbench.core.data.importing.importer import import_logs
 from symbench.core.data.storage.metadata import METADATA, content_hash
@@ -64,7 +65,7 @@ def test_a_model_whose_torques_are_misshaped_is_named_in_training(backend, shape
             entry,
             views["leg_grouped"],
             val["leg_grouped"],
-            TrainConfig(max_steps=1, progress=False),
+            TrainConfig(schedule=Converge(max_steps=1), progress=False),
         )
 
 

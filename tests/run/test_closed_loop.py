@@ -310,7 +310,9 @@ def test_the_closed_loop_declares_its_training_where_its_preset_says(
     from symbench.core.config.presets import preset
     from symbench.core.data import load_dataset
     from symbench.core.runs.evaluation import EvaluationContext
-    from symbench.core.runs.runner import TrainingJob, model_entry, planned_trainings
+    from symbench.core.runs.planning import planned_trainings
+    from symbench.core.runs.spec import model_entry
+    from symbench.core.runs.trainings import TrainingJob
 
     def refuse(*_):
         raise AssertionError("planning only")

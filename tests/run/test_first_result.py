@@ -5,7 +5,7 @@ from __future__ import annotations
 from click.testing import CliRunner
 
 from symbench.core.cli import build_cli
-from symbench.core.runs import runner
+from symbench.core.runs import spec
 from symbench.core.runs.results import read_record
 
 SMOKE_RUN = ["run", "--model", "sdnn", "--robot", "hexa", "--preset", "smoke"]
@@ -27,9 +27,9 @@ def _run(tmp_path, monkeypatch, *extra: str):
 def test_the_default_needs_one_training_and_full_is_the_boards_evaluation(tmp_path, monkeypatch):
     _, default = _run(tmp_path, monkeypatch)
     _, full = _run(tmp_path, monkeypatch, "--full")
-    assert default[0].evaluators == runner.FIRST_RESULT_EVALUATORS
-    assert full[0].evaluators == runner.DEFAULT_EVALUATORS
-    assert not set(runner.FIRST_RESULT_EVALUATORS) & {"generalization", "closed-loop"}
+    assert default[0].evaluators == spec.FIRST_RESULT_EVALUATORS
+    assert full[0].evaluators == spec.DEFAULT_EVALUATORS
+    assert not set(spec.FIRST_RESULT_EVALUATORS) & {"generalization", "closed-loop"}
 
 
 def test_full_and_evaluators_together_are_a_usage_error(tmp_path):
@@ -57,4 +57,4 @@ def test_each_stage_is_announced_with_the_time_so_far(smoke_home, tmp_path):
     record = read_record(
         tmp_path / "hexa-climb-smoke-v6__smoke__iid__sdnn__acc__torch__converge__seed0.json"
     )
-    assert list(record.metrics) == list(runner.FIRST_RESULT_EVALUATORS)
+    assert list(record.metrics) == list(spec.FIRST_RESULT_EVALUATORS)

@@ -99,7 +99,8 @@ def test_a_sweep_makes_the_data_its_evaluators_train_on_before_any_run(
     import shutil
 
     from symbench.core.runs import sweep as sweeping
-    from symbench.core.runs.runner import declared_datasets, ensure_dataset
+    from symbench.core.runs.planning import declared_datasets
+    from symbench.core.runs.spec import ensure_dataset
 
     home = tmp_path / "home"
     shutil.copytree(

@@ -11,7 +11,8 @@ from cli_invoke import error_line, invoke
 from symbench.core.data import load_dataset
 from symbench.core.plugin import registry
 from symbench.core.runs import tune as tuning
-from symbench.core.runs.runner import RunSpec, train_config
+from symbench.core.runs.run_config import train_config
+from symbench.core.runs.spec import RunSpec
 from symbench.core.training import loop
 
 RATES, SCALES = (1e-3, 3e-3), (0.5, 1.0)

@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from symbench import (
+    Converge,
     ModelDims,
     ModelEntry,
     SymbenchError,
@@ -119,7 +120,9 @@ def test_e2cnn_mlp_learns():
         entry(),
         tr["leg_grouped"],
         va["leg_grouped"],
-        TrainConfig(max_steps=32, eval_every=8, hyper={"fields": 8}, progress=False),
+        TrainConfig(
+            schedule=Converge(max_steps=32, eval_every=8), hyper={"fields": 8}, progress=False
+        ),
     )
     assert min(model.history["val_loss"][1:]) < model.history["val_loss"][0]
 

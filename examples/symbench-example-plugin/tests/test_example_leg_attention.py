@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from symbench import TrainConfig, model_entry, train
+from symbench import Converge, TrainConfig, model_entry, train
 from symbench.testing import synthetic_views
 
 
@@ -20,6 +20,8 @@ def test_leg_attention_learns():
         entry,
         tr["leg_grouped"],
         va["leg_grouped"],
-        TrainConfig(max_steps=32, eval_every=8, hyper={"latent": 16}, progress=False),
+        TrainConfig(
+            schedule=Converge(max_steps=32, eval_every=8), hyper={"latent": 16}, progress=False
+        ),
     )
     assert min(model.history["val_loss"][1:]) < model.history["val_loss"][0]

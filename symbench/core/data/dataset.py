@@ -10,7 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -22,6 +22,9 @@ from symbench.core.data.storage.files import read_trajectory
 from symbench.core.data.storage.metadata import read_metadata, verify
 from symbench.core.data.views.frames import LegFrames
 from symbench.core.data.views.transforms import build_view, require_known
+
+if TYPE_CHECKING:
+    from symbench.core.robot.specs import RobotSpec
 
 
 @dataclass
@@ -59,7 +62,7 @@ class Dataset:
         return np.array([rec["n_steps"] - 1 for rec in self.metadata["trajectories"]])
 
     @cached_property
-    def spec(self):
+    def spec(self) -> RobotSpec:
         from symbench.core.robot.specs import load_robot
 
         try:

@@ -17,7 +17,7 @@ import json
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -27,6 +27,10 @@ from symbench.core.config.presets import RECORD_PERIOD, Preset, dataset_id, pars
 from symbench.core.data.storage.scenario_fields import SCENARIO_KEYS
 from symbench.core.plugin.entries import EvaluatorEntry, ModelEntry
 from symbench.core.plugin.registry import evaluator
+
+if TYPE_CHECKING:  # the data layer's types, for annotations only
+    from symbench.core.data.dataset import Dataset
+    from symbench.core.robot.specs import RobotSpec
 
 Predict = Callable[[dict[str, np.ndarray]], np.ndarray]
 
@@ -69,7 +73,7 @@ class EvaluationContext:
     """
 
     entry: ModelEntry
-    dataset: Any  # symbench.core.data.dataset.Dataset
+    dataset: Dataset
     preset: Preset
     split: str
     seed: int
@@ -85,7 +89,8 @@ class EvaluationContext:
     )
 
     @property
-    def robot(self):
+    def robot(self) -> RobotSpec:
+        """The robot of the run's dataset (its registered spec, checked against the data)."""
         return self.dataset.spec
 
     def predictions(self) -> np.ndarray:
@@ -139,8 +144,12 @@ class EvaluationContext:
         return self.predict(arrays.inputs)
 
 
-def rmse(pred: np.ndarray, target: np.ndarray, axis: Any = None) -> np.ndarray:
-    return np.sqrt(np.mean((np.asarray(pred) - np.asarray(target)) ** 2, axis=axis))
+def rmse(
+    pred: np.ndarray, target: np.ndarray, axis: int | tuple[int, ...] | None = None
+) -> np.ndarray:
+    """The root mean squared error of `pred` against `target`, over `axis` (all: None)."""
+    error: np.ndarray = np.sqrt(np.mean((np.asarray(pred) - np.asarray(target)) ** 2, axis=axis))
+    return error
 
 
 def relative_error(actual: np.ndarray, expected: np.ndarray) -> float:
@@ -151,16 +160,16 @@ def relative_error(actual: np.ndarray, expected: np.ndarray) -> float:
     return float(np.max(np.abs(actual - expected))) / max(scale, np.finfo(np.float64).tiny)
 
 
-def _missing_fields(dataset: Any, fields: tuple[str, ...]) -> list[str]:
+def _missing_fields(dataset: Dataset, fields: tuple[str, ...]) -> list[str]:
     scenarios = dataset.scenarios
     return [f for f in fields if any(s.get(f) is None for s in scenarios)]
 
 
-def _imported(dataset: Any) -> str:
+def _imported(dataset: Dataset) -> str:
     return f"dataset '{dataset.id}' is imported"
 
 
-def unmet_need(need: str, dataset: Any) -> str | None:
+def unmet_need(need: str, dataset: Dataset) -> str | None:
     """Why `dataset` does not provide `need` (one line), or None when it does. A generated
     dataset provides everything; an imported one what its metadata and scenarios hold."""
     meta = dataset.metadata
@@ -198,7 +207,7 @@ def unmet_need(need: str, dataset: Any) -> str | None:
     raise SymbenchError(f"unknown evaluator need '{need}'")
 
 
-def skip_reason(entry: EvaluatorEntry, dataset: Any) -> str | None:
+def skip_reason(entry: EvaluatorEntry, dataset: Dataset) -> str | None:
     """The one-line reason why `entry` cannot run on `dataset` (its first unmet need), or
     None when it can."""
     for need in entry.needs:
@@ -212,11 +221,11 @@ def run_evaluators(
     names: list[str],
     context: EvaluationContext,
     progress: Callable[[str], None] = lambda name: None,
-) -> dict[str, dict]:
+) -> dict[str, dict[str, Any]]:
     """Each evaluator's metrics; one whose needs the dataset does not meet is skipped
     (`{"skipped": reason}`); one that raises, or returns anything but a JSON-ready mapping
     of metric names, is named in the error."""
-    results: dict[str, dict] = {}
+    results: dict[str, dict[str, Any]] = {}
     for name in names:
         entry = evaluator(name)
         reason = skip_reason(entry, context.dataset)

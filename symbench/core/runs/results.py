@@ -197,7 +197,7 @@ class RecordBody(RecordV1):
     def configuration(self) -> dict[str, Any]:
         """Everything the run was asked to do, as JSON values by a readable name: two records
         of one configuration differ only in what the run measured and where it ran. Compared
-        with `runner.configuration` of a requested run (same names)."""
+        with `run_config.configuration` of a requested run (same names)."""
         m, config = self.model, self.training.config.model_dump(mode="json")
         return {
             "dataset": self.dataset.id,

@@ -2,7 +2,7 @@
 
 A run is finished when a record at its path (named by its key: dataset, preset, split, model,
 variant, backend, seed) validates, matches its seal and holds the requested configuration:
-the same dataset content, evaluators and training configuration too (`runner.record_state`).
+the same dataset content, evaluators and training configuration too (`identity.record_state`).
 A record of another configuration there is never counted as finished: the sweep refuses
 before any run starts, naming the first difference, unless the runs say `overwrite`, and then
 they run again and replace those records. A record that cannot be trusted (corrupt, edited,
@@ -23,16 +23,11 @@ from dataclasses import replace
 from symbench.core.common.errors import SymbenchError
 from symbench.core.common.processes import run_each
 from symbench.core.runs import ray_executor
-from symbench.core.runs.runner import (
-    RunSpec,
-    check_names,
-    declared_datasets,
-    ensure_dataset,
-    record_state,
-    refusal,
-    resolve_robot,
-    run,
-)
+from symbench.core.runs.identity import record_state, refusal
+from symbench.core.runs.planning import declared_datasets
+from symbench.core.runs.run_config import check_names
+from symbench.core.runs.runner import run
+from symbench.core.runs.spec import RunSpec, ensure_dataset, resolve_robot
 
 
 def plan(

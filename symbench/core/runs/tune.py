@@ -20,10 +20,11 @@ from pathlib import Path
 from typing import Any
 
 from symbench.core.common.errors import SymbenchError
-from symbench.core.config.protocols import STEP_BUDGET
+from symbench.core.config.protocols import Paper
 from symbench.core.config.provenance import git_commit
 from symbench.core.plugin.entries import ModelEntry
-from symbench.core.runs.runner import RunSpec, ensure_dataset, model_entry, train_config
+from symbench.core.runs.run_config import train_config
+from symbench.core.runs.spec import RunSpec, ensure_dataset, model_entry
 from symbench.core.training.checkpoints import write_json
 from symbench.core.training.sizes import scaled_widths
 
@@ -149,9 +150,9 @@ def _summary(spec: RunSpec, dataset: Any, base: Any, study: Any, grid: list) -> 
         "split": spec.split,
         "seed": spec.seed,
         "protocol": base.protocol,
-        "budgets": {k: getattr(base, k) for k in ("max_steps", "eval_every", "patience")}
-        if base.protocol in STEP_BUDGET
-        else {"max_epochs": base.max_epochs},
+        "budgets": {"max_epochs": base.schedule.max_epochs}
+        if isinstance(base.schedule, Paper)
+        else asdict(base.schedule),
         "scored_by": "best validation loss (normalized MSE, validation trajectories carved "
         "from the training side; test trajectories never used)",
         "grid": [{"learning_rate": r, "width_scale": s} for r, s in grid],

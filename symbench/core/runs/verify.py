@@ -20,16 +20,18 @@ from __future__ import annotations
 import random
 import time
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
 from symbench.core.common.errors import SymbenchError
 from symbench.core.config.presets import parse_dataset_id
-from symbench.core.config.protocols import STEP_BUDGET
 from symbench.core.data.generation.standard import standard_hash
 from symbench.core.runs.results import ResultRecord, read_record
-from symbench.core.runs.runner import RunSpec, ensure_dataset, run
+from symbench.core.runs.run_config import train_config
+from symbench.core.runs.runner import run
+from symbench.core.runs.spec import RunSpec, ensure_dataset
+from symbench.core.training.config import TrainConfig
 
 RTOL = 1e-6
 ATOL = 1e-12
@@ -127,9 +129,10 @@ def compare(recorded: dict, reproduced: dict, tolerance: Tolerance) -> tuple[Met
 
 
 def replay_spec(record: ResultRecord, output: Path, workers: int) -> RunSpec:
-    """The run that made `record`, with its recorded training configuration."""
-    config = record.training.config
-    return RunSpec(
+    """The run that made `record`, with its recorded training configuration (the model's
+    recorded build hyper-parameters, all of them; a setting that records from before it
+    existed lack is the preset's)."""
+    run = RunSpec(
         model=record.model.name,
         robot=record.robot,
         dataset=record.dataset.id,
@@ -142,20 +145,11 @@ def replay_spec(record: ResultRecord, output: Path, workers: int) -> RunSpec:
         output=output,
         workers=workers,
         progress=False,
-        protocol=config.protocol,
-        max_steps=config.max_steps if config.protocol in STEP_BUDGET else None,
-        max_epochs=config.max_epochs if config.protocol == "paper" else None,
-        train_config={
-            "batch_size": config.batch_size,
-            **{k: getattr(config, k) for k in ("eval_every", "patience") if getattr(config, k)},
-            "stop_ratio": config.stop_ratio,
-            "stop_patience": config.stop_patience,
-            "val_stride": config.val_stride,
-            "learning_rate": config.learning_rate,
-            "compile": config.compile,
-            "hyper": dict(record.model.hyperparameters),
-        },
+        protocol=record.training.config.protocol,
     )
+    recorded = {k: v for k, v in record.training.config.model_dump().items() if v is not None}
+    flat = {**train_config(run).to_dict(), **recorded, "hyper": dict(record.model.hyperparameters)}
+    return replace(run, training=TrainConfig.from_dict(flat, progress=False))
 
 
 def verify_record(

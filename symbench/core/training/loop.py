@@ -44,63 +44,14 @@ from rich.progress import (
 
 from symbench.core.common.arrays import ViewArrays
 from symbench.core.common.errors import SymbenchError
-from symbench.core.common.seeds import check_seed
-from symbench.core.config.protocols import PROTOCOLS, STEP_BUDGET, rate_scale
+from symbench.core.config.protocols import Converge, Paper, rate_scale
 from symbench.core.data.views.model_dims import ModelDims, dims_of
 from symbench.core.plugin.entries import ModelEntry
 from symbench.core.training import resume
 from symbench.core.training.backends import get_backend
+from symbench.core.training.config import TrainConfig
 from symbench.core.training.normalization import Normalizer
 from symbench.core.training.trained_model import TrainedModel
-
-
-@dataclass(frozen=True)
-class TrainConfig:
-    seed: int = 0
-    batch_size: int = 64
-    protocol: str = "converge"
-    max_steps: int = 10000  # converge, cosine: the budget in gradient steps
-    eval_every: int = 500  # converge, cosine: steps between validation checks
-    patience: int = 6  # converge, cosine: checks without improvement before stopping
-    val_stride: int = 1  # validation checks use every val_stride-th row of each held-out climb
-    max_epochs: int = 200  # paper: the epoch cap
-    stop_ratio: float = 0.7  # paper
-    stop_patience: int = 5  # paper
-    learning_rate: float | None = None  # None: the model entry's learning rate
-    hyper: dict[str, Any] = field(default_factory=dict)  # network sizes, passed to build
-    compile: bool | None = None  # None: the backend's faster default (see `bench models`)
-    progress: bool = True
-
-    def __post_init__(self) -> None:
-        check_seed(self.seed, "TrainConfig.seed")
-        if self.protocol not in PROTOCOLS:
-            raise SymbenchError(
-                f"unknown training protocol '{self.protocol}' ({', '.join(PROTOCOLS)})"
-            )
-        counts = ("batch_size", "max_steps", "eval_every", "patience", "max_epochs", "val_stride")
-        for name in (*counts, "stop_patience"):
-            if getattr(self, name) < 1:
-                raise SymbenchError(
-                    f"TrainConfig.{name} must be at least 1, got {getattr(self, name)}"
-                )
-        if self.learning_rate is not None and not self.learning_rate > 0:
-            raise SymbenchError(
-                f"TrainConfig.learning_rate must be positive, got {self.learning_rate}"
-            )
-
-    def to_dict(self) -> dict[str, Any]:
-        """The settings that shape the trained model (the progress bar does not, so that a
-        model's content hash is the same with or without one). `val_stride` is left out at
-        1, so that records and resume checkpoints made before it existed still match."""
-        return {
-            k: v
-            for k, v in asdict(self).items()
-            if k != "progress" and not (k == "val_stride" and v == 1)
-        }
-
-    def rate_for(self, entry: ModelEntry) -> float:
-        """The learning rate a training of `entry` uses: this config's, else the model's."""
-        return entry.learning_rate if self.learning_rate is None else self.learning_rate
 
 
 @dataclass
@@ -140,10 +91,11 @@ def round_batches(n: int, config: TrainConfig, state: _Progress) -> np.ndarray:
     """The batches between this validation check and the next: one epoch under `paper`;
     under `converge` the next `eval_every` gradient steps (at most up to the budget) of the
     stream of epochs, so a check may fall in the middle of one."""
-    if config.protocol == "paper":
+    budget = config.schedule
+    if isinstance(budget, Paper):
         return batch_order(n, config.batch_size, config.seed, state.epoch)
     per_epoch = batches_per_epoch(n, config.batch_size)
-    steps = range(state.steps, min(state.steps + config.eval_every, config.max_steps))
+    steps = range(state.steps, min(state.steps + budget.eval_every, budget.max_steps))
     epochs = {s // per_epoch for s in steps}
     orders = {e: batch_order(n, config.batch_size, config.seed, e) for e in epochs}
     return np.stack([orders[s // per_epoch][s % per_epoch] for s in steps])
@@ -211,7 +163,7 @@ def train(
             batches = round_batches(len(train), config, state)
             steps = range(state.steps, state.steps + len(batches))
             train_loss = trainer.train_epoch(
-                batches, rate_scale(config.protocol, steps, config.max_steps)
+                batches, rate_scale(config.protocol, steps, config.steps_and_epochs[0].max_steps)
             )
             val_loss = trainer.val_loss()
             if not (math.isfinite(train_loss) and math.isfinite(val_loss)):
@@ -244,39 +196,42 @@ def _strikes(
 ) -> int:
     """Checks in a row that count towards stopping: without improvement (`converge`), or
     with `stop_ratio` x validation loss above the training loss (`paper`)."""
-    if config.protocol in STEP_BUDGET:
+    budget = config.schedule
+    if isinstance(budget, Converge):
         strike = not improved
     else:
-        strike = config.stop_ratio * val_loss > train_loss
+        strike = budget.stop_ratio * val_loss > train_loss
     return state.strikes + 1 if strike else 0
 
 
 def _stop_reason(state: _Progress, config: TrainConfig) -> tuple[str, str]:
     """(a protocols.StoppedBy, a sentence) once the protocol says stop, else ("", "")."""
-    if config.protocol in STEP_BUDGET:
-        if state.strikes >= config.patience:
+    budget = config.schedule
+    if isinstance(budget, Converge):
+        if state.strikes >= budget.patience:
             return "patience", (
-                f"validation loss did not improve for {config.patience} checks "
-                f"({config.patience * config.eval_every} steps)"
+                f"validation loss did not improve for {budget.patience} checks "
+                f"({budget.patience * budget.eval_every} steps)"
             )
-        if state.steps >= config.max_steps:
-            return "budget", f"reached the budget of {config.max_steps} steps"
+        if state.steps >= budget.max_steps:
+            return "budget", f"reached the budget of {budget.max_steps} steps"
         return "", ""
-    if state.strikes >= config.stop_patience:
+    if state.strikes >= budget.stop_patience:
         return "overfitting-rule", (
-            f"{config.stop_ratio} x validation loss exceeded the training loss "
-            f"{config.stop_patience} epochs in a row"
+            f"{budget.stop_ratio} x validation loss exceeded the training loss "
+            f"{budget.stop_patience} epochs in a row"
         )
-    if state.epoch >= config.max_epochs:
-        return "epoch-cap", f"reached max_epochs={config.max_epochs}"
+    if state.epoch >= budget.max_epochs:
+        return "epoch-cap", f"reached max_epochs={budget.max_epochs}"
     return "", ""
 
 
 def _bar_total(config: TrainConfig, n_train: int) -> int:
     """The progress bar counts gradient steps, up to the budget or the epoch cap."""
-    if config.protocol in STEP_BUDGET:
-        return config.max_steps
-    return config.max_epochs * batches_per_epoch(n_train, config.batch_size)
+    budget = config.schedule
+    if isinstance(budget, Converge):
+        return budget.max_steps
+    return budget.max_epochs * batches_per_epoch(n_train, config.batch_size)
 
 
 def _check_data(entry: ModelEntry, train: ViewArrays, val: ViewArrays) -> ModelDims:

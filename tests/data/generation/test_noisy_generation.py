@@ -17,7 +17,7 @@ from symbench.core.common.errors import SymbenchError
 from symbench.core.config.presets import PRESETS, dataset_id, parse_dataset_id
 from symbench.core.data.storage.scenario_fields import StoredScenario
 from symbench.core.runs.evaluation import REPLAY_FIELDS, EvaluationContext
-from symbench.core.runs.runner import is_standard
+from symbench.core.runs.spec import is_standard
 from symbench.core.sim.climb.rollout import run_climb, simulate
 from symbench.core.sim.scene.scenario import Scenario
 from symbench.core.sim.scene.setup import Climb

@@ -40,7 +40,7 @@ from symbench.core.common.errors import SymbenchError
 from symbench.core.config.presets import preset
 from symbench.core.runs.control_policy import feedforward_policy
 from symbench.core.runs.results import RecordV1
-from symbench.core.runs.runner import checkpoint_root
+from symbench.core.runs.spec import checkpoint_root
 from symbench.core.sim.scene.scenario import Scenario
 from symbench.core.sim.tracking.learned_control import (
     Tracking,

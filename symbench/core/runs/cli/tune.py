@@ -3,30 +3,40 @@
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Any
 
 import click
 from rich.table import Table
 
-from symbench.core.common.cli_types import POSITIVE, SEED, WORKERS, CommaList, WritableFolder
+from symbench.core.common.cli_types import POSITIVE, CommaList
 from symbench.core.common.console import StdoutConsole
-from symbench.core.runs.options import protocol_option
-from symbench.core.runs.runner import RunSpec, check_names, default_preset, resolve_robot
+from symbench.core.runs import tune as tuning
+from symbench.core.runs.options import run_options, spec_fields
+from symbench.core.runs.run_config import check_names
+from symbench.core.runs.spec import RunSpec, default_preset, resolve_robot
 from symbench.core.runs.tune import DEFAULT_WIDTH_SCALES
 
 
 @click.command("tune")
-@click.option("--model", "model_name", required=True, help="Registered model, e.g. sdnn.")
-@click.option("--robot", "robot_name", default=None, help="Registered robot, e.g. hexa.")
-@click.option("--dataset", default=None, help="A cached dataset id instead of the standard one.")
-@click.option("--backend", default="torch", show_default=True, help="torch or jax.")
-@click.option(
-    "--split", default="iid", show_default=True, help="The split whose training side is searched."
+@run_options(
+    "model",
+    "robot",
+    "dataset",
+    "backend",
+    "split",
+    "seed",
+    "preset",
+    "protocol",
+    robot={"help": "Registered robot, e.g. hexa."},
+    dataset={"help": "A cached dataset id instead of the standard one."},
+    split={
+        "default": "iid",
+        "show_default": True,
+        "help": "The split whose training side is searched.",
+    },
+    preset={"help": "Budgets (default: a standard dataset's own, else small)."},
+    protocol={"help": "Training protocol of every trial."},
 )
-@click.option("--seed", type=SEED, default=0, show_default=True)
-@click.option(
-    "--preset", default=None, help="Budgets (default: a standard dataset's own, else small)."
-)
-@protocol_option("Training protocol of every trial.")
 @click.option(
     "--learning-rates",
     type=CommaList(POSITIVE),
@@ -40,55 +50,28 @@ from symbench.core.runs.tune import DEFAULT_WIDTH_SCALES
     show_default=True,
     help="Comma-separated factors on the model's width keywords (its ModelEntry.widths).",
 )
-@click.option("--output", type=WritableFolder(), default=Path("tuning"), show_default=True)
-@click.option(
-    "--workers",
-    default=2,
-    show_default=True,
-    type=WORKERS,
-    help="Worker processes simulating the dataset when it is missing.",
+@run_options(
+    "output",
+    "workers",
+    output={"default": Path("tuning"), "help": ""},
+    workers={"help": "Worker processes simulating the dataset when it is missing."},
 )
-def tune(
-    model_name: str,
-    robot_name: str | None,
-    dataset: str | None,
-    backend: str,
-    split: str,
-    seed: int,
-    preset: str | None,
-    protocol: str,
-    learning_rates: list[float] | None,
-    width_scales: list[float],
-    output: Path,
-    workers: int,
-) -> None:
+def tune(learning_rates: list[float] | None, width_scales: list[float], **options: Any) -> None:
     """Search learning rate x width for MODEL on validation data only (never the test
     split); resumes an interrupted search from OUTPUT and writes OUTPUT/<run key>.tune.json."""
-    from symbench.core.runs import tune as tuning
-
-    if robot_name is None and dataset is None:
+    robot, dataset = options["robot"], options["dataset"]
+    if robot is None and dataset is None:
         raise click.UsageError("give --robot (its standard dataset) or --dataset")
-    if dataset is not None:
-        robot_name = resolve_robot(robot_name, dataset)
-    assert robot_name is not None
-    spec = RunSpec(
-        model=model_name,
-        robot=robot_name,
-        backend=backend,
-        split=split,
-        seed=seed,
-        preset=preset or default_preset(dataset),
-        protocol=protocol,
-        evaluators=(),
-        output=output,
-        workers=workers,
-        progress=False,
-        dataset=dataset,
-    )
+    resolved = {
+        "robot": robot if dataset is None else resolve_robot(robot, dataset),
+        "preset": options["preset"] or default_preset(dataset),
+    }
+    spec = RunSpec(**spec_fields({**options, **resolved}), evaluators=(), progress=False)
     check_names(spec)
     entry = tuning.model_entry(spec)
     rates = learning_rates or list(tuning.default_rates(entry))
     console = StdoutConsole()
+    output = spec.output
     summary = tuning.tune(spec, rates, width_scales, output, report=console.print)
     console.print(_table(summary))
     console.print(f"summary: {tuning.summary_path(output, spec)}", soft_wrap=True)
