@@ -16,7 +16,19 @@ from stand_ins import closed_loop_dataset, trained_on_split
 import symbench
 from symbench.core.common.errors import SymbenchError, UnknownNameError
 from symbench.core.config.cli import SECTIONS, _cell
-from symbench.core.config.presets import PRESETS, ClosedLoop, Evaluation, SampleEfficiency, Training
+from symbench.core.config.datasets import ClimbDistribution, ScenarioGrid
+from symbench.core.config.presets import (
+    GAIT_SPREAD,
+    LEGACY_PRESETS,
+    PRESETS,
+    ClosedLoop,
+    Evaluation,
+    SampleEfficiency,
+    Training,
+    dataset_id,
+    parse_dataset_id,
+    preset,
+)
 from symbench.core.config.protocols import Converge, Cosine, Paper
 from symbench.core.data import load_dataset
 from symbench.core.plugin import registry
@@ -31,12 +43,12 @@ SMOKE_TRAINING = Training(max_steps=30, eval_every=10, patience=2, max_epochs=3)
 SMALL_TRAINING = Training(max_steps=10000, eval_every=500, patience=6, max_epochs=60)
 BUDGETS = {
     "smoke": {"training": SMOKE_TRAINING, "horizon_s": 1.0, "references": 2, "grid_seconds": 1.0},
-    "small": {"training": SMALL_TRAINING, "horizon_s": 2.6, "references": 6, "grid_seconds": 2.6},
+    "small": {"training": SMALL_TRAINING, "horizon_s": 2.0, "references": 6, "grid_seconds": 2.0},
     "transfer": {
         "training": SMALL_TRAINING,
-        "horizon_s": 2.6,
+        "horizon_s": 2.0,
         "references": 6,
-        "grid_seconds": 2.6,
+        "grid_seconds": 2.0,
     },
     "paper": {
         "training": Training(
@@ -54,9 +66,9 @@ BUDGETS = {
     },
     "small-noisy": {
         "training": SMALL_TRAINING,
-        "horizon_s": 2.6,
+        "horizon_s": 2.0,
         "references": 6,
-        "grid_seconds": 2.6,
+        "grid_seconds": 2.0,
     },
 }
 # the closed loop trains on these presets' datasets (data for control)
@@ -68,7 +80,19 @@ TRAIN_PRESETS = {
     "smoke-noisy": "smoke-noisy",
     "small-noisy": "small-noisy",
 }
-# What the dataset metadata stores (and so its content hash covers), in this order.
+# What the dataset metadata stores (and so its content hash covers), in this order: a grid's
+# (smoke; every preset up to dataset v6) and drawn climbs' (dataset v7)
+DRAWN_KEYS = [
+    "name",
+    "description",
+    "distribution",
+    "climbs",
+    "inclinations_deg",
+    "leg_orders",
+    "gait_spread",
+    "seconds",
+    "draw_seed",
+]
 GRID_KEYS = [
     "name",
     "description",
@@ -107,15 +131,54 @@ def test_the_budgets_are_those_of_the_published_board():
 
 
 def test_the_stored_grid_holds_the_grid_and_no_budget():
-    for p in PRESETS.values():
+    for p in [*PRESETS.values(), *LEGACY_PRESETS.values()]:
         grid = p.grid(3)
         noisy = ["torque_noise"] if p.dataset.torque_noise else []  # only when there is noise
-        assert list(grid) == [*GRID_KEYS[:-1], *noisy, GRID_KEYS[-1]]
         assert (grid["name"], grid["description"]) == (p.name, p.description)
+        if isinstance(p.dataset, ClimbDistribution):
+            assert list(grid) == [*DRAWN_KEYS, *noisy]
+            continue
+        spread = ["gait_spread"] if p.dataset.gait_spread else []  # v7's smoke only
+        assert list(grid) == [*GRID_KEYS[:-1], *noisy, *spread, GRID_KEYS[-1]]
         assert grid["yaws_deg"] == list(p.dataset.yaws_deg(3))
-    assert PRESETS["small"].grid(6)["yaws_deg"] == [15.0 * k for k in range(24)]
-    assert PRESETS["small"].grid(9)["yaws_deg"] == [10.0 * k for k in range(36)]
+    assert preset("small@v6").grid(6)["yaws_deg"] == [15.0 * k for k in range(24)]
+    assert preset("small@v6").grid(9)["yaws_deg"] == [10.0 * k for k in range(36)]
     assert PRESETS["smoke"].grid(9)["yaws_deg"] == [0.0, 180.0, 250.0]
+
+
+def test_earlier_versions_keep_their_ids_and_grids():
+    """v6's datasets (the published v6 board's) stay standard: `small@v6` names them."""
+    assert dataset_id("hexa", "small") == "hexa-climb-small-v7"
+    assert dataset_id("hexa", "small@v6") == "hexa-climb-small-v6"
+    assert parse_dataset_id("hexa-climb-small-v6") == ("hexa", "small@v6")
+    assert parse_dataset_id("hexa-climb-small-noisy-v6") == ("hexa", "small-noisy@v6")
+    assert parse_dataset_id("hexa-climb-small-v7") == ("hexa", "small")
+    assert parse_dataset_id("hexa-climb-small-v5") is None
+    assert preset("small@v6").closed_loop.train_preset == "small-noisy@v6"
+    assert preset("small@v6").name == "small" and preset("small@v6").version == 6
+    grid = preset("small@v6").dataset
+    assert isinstance(grid, ScenarioGrid) and grid.seconds == 2.6 and not grid.gait_spread
+
+
+@pytest.mark.parametrize("name", ["small", "transfer", "paper"])
+def test_drawn_climbs_differ_and_their_distribution_keeps_the_symmetry(name):
+    """Every start is drawn from a distribution the rotations and mirrors map onto itself
+    (the full circle; the band of slopes), the same on every call, and no two climbs share
+    their draws: none is an image of another."""
+    p = PRESETS[name]
+    assert isinstance(p.dataset, ClimbDistribution)
+    climbs = p.scenarios("hexa", 6, 6)
+    assert climbs == p.scenarios("hexa", 6, 6) and len(climbs) == p.dataset.climbs
+    low, high = p.dataset.inclinations_deg
+    yaws = np.array([c.yaw_deg for c in climbs])
+    directions = np.array([c.direction for c in climbs], dtype=float)
+    assert all(low <= c.inclination_deg <= high for c in climbs)
+    assert yaws.min() >= 0 and yaws.max() < 360 and 0 <= directions.min() < directions.max() < 360
+    sectors = np.bincount((yaws // 60).astype(int), minlength=6)  # every sector drawn alike
+    assert sectors.min() > 0.5 * len(climbs) / 6
+    assert len({(c.yaw_deg % 60, c.heading_deg, c.direction) for c in climbs}) == len(climbs)
+    assert len({c.seed for c in climbs}) == len(climbs)  # each steps with its own draws
+    assert all(c.gait_spread == GAIT_SPREAD for c in climbs)
 
 
 def test_presets_json_is_every_preset_with_every_number():
@@ -126,6 +189,7 @@ def test_presets_json_is_every_preset_with_every_number():
     for name, p in PRESETS.items():
         assert shown[name] == json.loads(json.dumps(dataclasses.asdict(p)))
         assert list(shown[name]) == ["name", "description", *SECTIONS]
+        assert shown[name]["version"] == 7
     assert shown["paper"]["training"] == {
         "max_steps": 200000,
         "eval_every": 5000,
@@ -141,7 +205,7 @@ def test_presets_json_is_every_preset_with_every_number():
         "train_preset": "smoke-noisy",
     }
     assert shown["small"]["sample_efficiency"] == {"fractions": [0.1, 0.25, 0.5, 0.75]}
-    assert shown["paper"]["dataset"]["inclinations_deg"] == [57.29577951308232, 90.0]
+    assert shown["paper"]["dataset"]["inclinations_deg"] == [45.0, 135.0]
 
 
 def test_presets_table_has_a_row_per_number(monkeypatch):
@@ -152,11 +216,17 @@ def test_presets_table_has_a_row_per_number(monkeypatch):
     assert all(name in lines[2] for name in PRESETS)  # the header
     doc = {name: json.loads(json.dumps(dataclasses.asdict(p))) for name, p in PRESETS.items()}
     for section in SECTIONS:
-        for setting in doc["small"][section]:
-            cells = [_cell(p[section][setting]) for p in doc.values()]
+        values = [p[section] for p in doc.values()]
+        if not isinstance(values[0], dict):
+            cells = [section.replace("_", " "), *map(_cell, values)]
+            row = re.compile(r"│\s*" + r"\s*│\s*│?\s*".join(map(re.escape, cells)) + r"\s*│")
+            assert any(row.search(line) for line in lines), (section, cells)
+            continue
+        for setting in dict.fromkeys(s for v in values for s in v):
+            cells = [_cell(v.get(setting, "")) for v in values]
             row = re.compile(r"│\s*" + r"\s*│\s*".join(map(re.escape, [setting, *cells])) + r"\s*│")
             assert any(row.search(line) for line in lines), (section, setting, cells)
-    assert "57.2958" in result.stdout and "forward, backward, left, right" in result.stdout
+    assert "45, 135" in result.stdout and "default, reversed" in result.stdout
     assert "small-noisy" in lines[2]
 
 

@@ -30,12 +30,12 @@ def _cell(value: Any) -> str:
 
 
 def presets_table(doc: dict[str, dict[str, Any]]) -> Table:
-    """One column per preset, one row per number, grouped by section."""
+    """One column per preset, one row per number, grouped by section (a number a preset
+    does not have, such as a grid's axes beside drawn climbs, shows as a blank)."""
     table = Table(
         title="symbench presets",
-        caption="dataset: one trajectory per combination of its axes (yaws: at least "
-        "yaws_per_turn, a whole number per symmetry sector; 0: just 0 and 180); "
-        "the budgets below it are not part of the dataset",
+        caption="dataset: a grid (one trajectory per combination of its axes) or climbs drawn "
+        "from continuous distributions (dataset v7); the budgets below it are not part of it",
     )
     table.add_column("section", style="bold")
     table.add_column("setting")
@@ -44,10 +44,14 @@ def presets_table(doc: dict[str, dict[str, Any]]) -> Table:
     table.add_row("", "description", *(p["description"] for p in doc.values()))
     for section in SECTIONS:
         table.add_section()
-        settings = list(next(iter(doc.values()))[section])
+        values = [p[section] for p in doc.values()]
+        if not isinstance(values[0], dict):  # a number of its own (version, failure share)
+            table.add_row(section.replace("_", " "), "", *(_cell(v) for v in values))
+            continue
+        settings = list(dict.fromkeys(s for v in values for s in v))
         for i, setting in enumerate(settings):
             label = section.replace("_", " ") if i == 0 else ""
-            table.add_row(label, setting, *(_cell(p[section][setting]) for p in doc.values()))
+            table.add_row(label, setting, *(_cell(v.get(setting, "")) for v in values))
     return table
 
 

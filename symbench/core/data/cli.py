@@ -10,7 +10,7 @@ from rich.table import Table
 
 from symbench.core.common.cli_types import SEED, WORKERS, CommaList, WritableFolder
 from symbench.core.common.console import StdoutConsole
-from symbench.core.config.presets import PRESETS
+from symbench.core.config.presets import LEGACY_PRESETS, PRESETS
 
 console = StdoutConsole()
 
@@ -36,8 +36,9 @@ def _print_failures(failures: list[dict], shown: int = 10) -> None:
     "preset_name",
     default="small",
     show_default=True,
-    type=click.Choice(list(PRESETS)),
-    help="Whose scenario grid (see `symbench presets`).",
+    type=click.Choice([*PRESETS, *LEGACY_PRESETS]),
+    help="Whose climbs (see `symbench presets`); `small@v6` and the like regenerate an "
+    "earlier dataset version.",
 )
 @click.option(
     "--workers",

@@ -15,7 +15,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from symbench.core.common.errors import SymbenchError, UnknownNameError
-from symbench.core.config.presets import dataset_id, parse_dataset_id
+from symbench.core.config.presets import dataset_id, parse_dataset_id, preset
 from symbench.core.data.dataset import Dataset, load_dataset, missing_hint
 from symbench.core.data.generation.generate import ensure_dataset as ensure
 from symbench.core.data.storage.metadata import METADATA, dataset_dir, read_metadata
@@ -109,9 +109,10 @@ def is_standard(did: str) -> bool:
 
 
 def default_preset(did: str | None) -> str:
-    """The preset of a run that names none: a standard dataset's own, else `small`."""
+    """The preset of a run that names none: a standard dataset's own (by name: an earlier
+    version's dataset runs under today's budgets of that name), else `small`."""
     parsed = parse_dataset_id(did) if did is not None else None
-    return parsed[1] if parsed is not None else "small"
+    return preset(parsed[1]).name if parsed is not None else "small"
 
 
 def dataset_robot(did: str) -> str:

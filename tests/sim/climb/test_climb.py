@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import re
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -100,6 +101,37 @@ def test_a_mirrored_relabelled_run_reproduces_the_original(robot, offset):
     climb = Climb(spec, Arena(60.0, 30.0), yaw_deg=7.0, seed=1)
     check = check_element(climb, mirror(spec.n_legs, offset), 0.6)
     assert not check.declared and check.error < 1e-9, check.columns
+
+
+@pytest.mark.parametrize("robot, offset", [("magneto", 3), ("hexa", 1), ("nona", 4)])
+def test_twins_with_drawn_steps_reproduce_the_original(robot, offset):
+    """Dataset v7's climbs step with drawn swing heights and goals: a rotated and a mirrored
+    twin (legs relabelled) still run the same climb, over more than one step, so the data's
+    distribution keeps the robot's symmetry while no two climbs share their draws."""
+    spec = load_robot(robot)
+    climb = Climb(spec, Arena(60.0, 30.0), yaw_deg=7.0, seed=3, gait_spread=0.2)
+    seconds = 0.3 + 2 * spec.gait.step_duration
+    turned = check_element(climb, shift(spec.n_legs, spec.symmetry_shift), seconds)
+    mirrored = check_element(climb, mirror(spec.n_legs, offset), seconds)
+    assert turned.declared and turned.error < 1e-9, turned.columns
+    assert mirrored.error < 1e-9, mirrored.columns
+
+
+def test_drawn_steps_differ_from_the_fixed_gait_and_stay_within_their_spread():
+    spec = load_robot("hexa")
+    fixed = Climb(spec, Arena(90.0, 0.0), seed=3)
+    drawn = replace(fixed, gait_spread=0.2)
+    assert fixed.step_draws() == (None, None)
+    heights, offsets = drawn.step_draws()
+    assert heights is not None and offsets is not None
+    g = spec.gait
+    assert np.all(np.abs(heights / g.swing_height - 1) <= 0.2) and heights.std() > 0
+    assert np.all(np.abs(offsets) <= 0.2 * g.step_length) and offsets.std() > 0
+    t = 0.2 + g.release + 0.5 * g.swing  # the first step's apex
+    a, b = fixed.plan().targets(t), drawn.plan().targets(t)
+    assert a.step_leg == b.step_leg and not np.allclose(a.sole_pos, b.sole_pos)
+    other = replace(drawn, seed=4).step_draws()[0]
+    assert other is not None and not np.allclose(other, heights)  # each climb its own
 
 
 def test_symmetry_check_can_fail(monkeypatch):

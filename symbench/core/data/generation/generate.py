@@ -224,12 +224,20 @@ def generate(
                 "`if __name__ == '__main__':` guard)"
             ) from None
     seconds = time.perf_counter() - start
+    failed = sum(r["status"] != "ok" for r in records.values())
+    if id_override is None and failed > grid.max_failed_share * len(tasks):
+        raise SymbenchError(
+            f"{did}: the expert failed {failed} of {len(tasks)} climbs, more than the "
+            f"{grid.max_failed_share:.0%} a standard dataset allows; its distribution asks "
+            "for slopes or steps the controller does not climb reliably (the finished "
+            "trajectories stay in the cache)"
+        )
     grid_doc = grid.grid(order) if id_override is None else {"scenarios": len(tasks)}
     meta = _write_dataset(
         root,
         did,
         robot,
-        preset_name,
+        grid.name,
         spec.n_legs,
         key,
         grid_doc,
@@ -283,6 +291,7 @@ def _write_dataset(
             "trajectories": ok,
             "failures": failures,
             "n_samples": sum(r["n_steps"] - 1 for r in ok),
+            # hashed with the rest, so an earlier version's dataset keeps its name, not its key
             "repair_command": f"symbench data generate --robot {robot} --preset {preset_name}",
         },
     )

@@ -50,7 +50,7 @@ def recipe(robot: str, preset_name: str) -> dict[str, Any]:
             {  # as stored: tuples become lists
                 "source": "generated",
                 "robot": robot,
-                "preset": preset_name,
+                "preset": grid.name,
                 "robot_spec_hash": spec.spec_hash(),
                 "raw_schema_version": SCHEMA_VERSION,
                 "record_period_s": RECORD_PERIOD,

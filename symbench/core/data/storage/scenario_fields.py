@@ -21,12 +21,15 @@ class ScenarioFields(BaseModel):
     inclination_deg: Annotated[float, Field(ge=0, le=180, allow_inf_nan=False)] | None = None
     heading_deg: Finite | None = None
     yaw_deg: Finite | None = None
-    direction: Literal[tuple(DIRECTIONS)] | None = None  # type: ignore[valid-type]
+    # a named body direction, or (data drawn from continuous distributions) degrees
+    direction: Literal[tuple(DIRECTIONS)] | Finite | None = None  # type: ignore[valid-type]
     leg_order: list[Annotated[int, Field(ge=0)]] | None = None
     seed: Annotated[int, Field(ge=0)] | None = None
     seconds: Annotated[float, Field(gt=0, allow_inf_nan=False)] | None = None
     # N m, only in data for control (a noisy preset): absent means none
     torque_noise: Annotated[float, Field(ge=0, allow_inf_nan=False)] | None = None
+    # relative spread of each step's swing height and goal (dataset v7): absent means none
+    gait_spread: Annotated[float, Field(ge=0, lt=1, allow_inf_nan=False)] | None = None
 
 
 class StoredScenario(ScenarioFields):

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 from numba import njit
 
 STANCE, RELEASE, SWING, TOUCHDOWN = 0, 1, 2, 3
@@ -54,11 +55,12 @@ def gait_targets(
     order,
     timing,
     step_length,
-    swing_height,
+    swing_heights,
     direction,
     normal,
     base_start,
     soles_start,
+    goal_offsets,
     liftoff,
     liftoff_slot,
     phase,
@@ -70,7 +72,9 @@ def gait_targets(
     time t; returns (slot, stepping leg), both -1 while settling. timing = (release, swing,
     touchdown) in s; `liftoff` is where the stepping foot really stood when released: its
     swing starts there (the goal stays on the plan) when `liftoff_slot` is the current slot
-    or -1 (any slot); -2: no liftoff."""
+    or -1 (any slot); -2: no liftoff. Slot s swings `swing_heights[s]` high to its nominal goal
+    moved by `goal_offsets[s]` (along, across the direction); slots past the arrays take
+    their last entry."""
     n = order.shape[0]
     release, swing, slot_time = timing[0], timing[1], timing[0] + timing[1] + timing[2]
     s = math.floor((t - SETTLE) / slot_time) if t >= SETTLE else -1
@@ -89,6 +93,18 @@ def gait_targets(
     leg = order[s % n]
     start = soles_start[leg] + ((s // n) * step_length) * direction
     goal = start + step_length * direction
+    if goal_offsets.shape[0] > 1:  # each step its own goal (`Climb.step_draws`)
+        last = goal_offsets.shape[0] - 1
+        across = np.empty(3)  # normal x direction: in the surface, left of the direction
+        across[0] = normal[1] * direction[2] - normal[2] * direction[1]
+        across[1] = normal[2] * direction[0] - normal[0] * direction[2]
+        across[2] = normal[0] * direction[1] - normal[1] * direction[0]
+        here = goal_offsets[min(s, last)]
+        goal = goal + here[0] * direction + here[1] * across
+        if s >= n:  # the swing starts where this leg's previous step put it
+            before = goal_offsets[min(s - n, last)]
+            start = start + before[0] * direction + before[1] * across
+    swing_height = swing_heights[min(s, swing_heights.shape[0] - 1)]
     if tau < release:
         phase[leg], magnet[leg] = RELEASE, 0.0
         sole[0] = start

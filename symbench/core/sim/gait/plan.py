@@ -100,6 +100,10 @@ class GaitPlan:
     normal: np.ndarray  # (3,) surface normal
     base_start: np.ndarray  # (3,)
     soles_start: np.ndarray  # (n, 3) sole contact points at t = 0 (world)
+    # per step slot: swing height (m), and the goal's offset (m) along and across the step
+    # direction from its nominal place (`Climb.step_draws`); None: the spec's fixed gait
+    swing_heights: np.ndarray | None = None
+    goal_offsets: np.ndarray | None = None
 
     @staticmethod
     def stagger(spec: RobotSpec, order: tuple[int, ...]) -> np.ndarray:
@@ -132,17 +136,25 @@ class GaitPlan:
 
     @cached_property
     def kernel_args(self) -> tuple:
-        """The plan's arguments of `gait_kernel.gait_targets` after t: order, (release,
-        swing, touchdown), step length, swing height, direction, normal, base start,
-        soles at the start, as the compiled code takes them."""
+        """The plan's arguments of `gait.kernel.gait_targets` after t: order, (release,
+        swing, touchdown), step length, each slot's swing height, direction, normal, base
+        start, soles at the start, each slot's goal offset, as the compiled code takes them."""
         g = self.spec.gait
+        heights = self.swing_heights
+        offsets = self.goal_offsets
         return (
             np.asarray(self.order, dtype=np.int64),
             np.array([g.release, g.swing, g.touchdown]),
             g.step_length,
-            g.swing_height,
             *(
                 np.ascontiguousarray(a, dtype=float)
-                for a in (self.direction, self.normal, self.base_start, self.soles_start)
+                for a in (
+                    np.full(1, g.swing_height) if heights is None else heights,
+                    self.direction,
+                    self.normal,
+                    self.base_start,
+                    self.soles_start,
+                    np.zeros((1, 2)) if offsets is None else offsets,
+                )
             ),
         )

@@ -10,6 +10,13 @@ relative to the slope (0: base x points up the slope).
 command at every control step, seeded from the scenario (`noise_seed`); the recorded torque
 stays the expert's own command at the perturbed state. 0 leaves the rollout untouched and
 the field out of `to_dict`, so noise-free datasets store what they always did.
+
+`gait_spread` (default 0) makes every step of the climb its own (dataset v7, as the paper
+sampled them): each step's swing height and goal offset are drawn around the robot's nominal
+values, uniformly within +-`gait_spread` of the nominal swing height and of the step length
+(along and across the step direction), from a stream seeded by the climb's `seed`. 0 is the
+fixed gait of earlier datasets and is left out of `to_dict` likewise. `direction` is a named
+body direction or, for data drawn from continuous distributions, an angle in degrees.
 """
 
 from __future__ import annotations
@@ -32,18 +39,19 @@ class Scenario:
     inclination_deg: float = 0.0
     heading_deg: float = 0.0
     yaw_deg: float = 0.0
-    direction: str = "forward"
+    direction: str | float = "forward"  # a name of DIRECTIONS, or degrees from the base x axis
     leg_order: tuple[int, ...] | None = None
     seed: int = 0
     seconds: float = 10.0
     torque_noise: float = 0.0  # N m, std of the noise on the executed servo command
+    gait_spread: float = 0.0  # relative half-width of each step's swing height and goal draws
 
     def __post_init__(self) -> None:
         if not 0.0 <= self.inclination_deg <= 180.0:
             raise SymbenchError(
                 f"scenario: inclination_deg {self.inclination_deg} is outside 0..180"
             )
-        for name in ("heading_deg", "yaw_deg", "seconds", "torque_noise"):
+        for name in ("heading_deg", "yaw_deg", "seconds", "torque_noise", "gait_spread"):
             if not math.isfinite(getattr(self, name)):
                 raise SymbenchError(f"scenario: {name} must be finite")
         if self.seconds <= 0:
@@ -52,22 +60,35 @@ class Scenario:
             raise SymbenchError(
                 f"scenario: torque_noise must not be negative, got {self.torque_noise}"
             )
-        if self.direction not in DIRECTIONS:
+        if not 0.0 <= self.gait_spread < 1.0:
+            raise SymbenchError(f"scenario: gait_spread must be in [0, 1), got {self.gait_spread}")
+        if isinstance(self.direction, bool) or not isinstance(self.direction, str | float | int):
+            raise SymbenchError(
+                f"scenario: direction {self.direction!r} is neither a name nor an angle"
+            )
+        if isinstance(self.direction, str) and self.direction not in DIRECTIONS:
             raise SymbenchError(
                 f"scenario: direction '{self.direction}' is not one of {', '.join(DIRECTIONS)}"
             )
+        if not isinstance(self.direction, str):
+            if not math.isfinite(self.direction):
+                raise SymbenchError("scenario: direction must be finite")
+            object.__setattr__(self, "direction", float(self.direction))
         if self.leg_order is not None:
             object.__setattr__(self, "leg_order", tuple(int(i) for i in self.leg_order))
 
     @property
     def direction_deg(self) -> float:
-        return DIRECTIONS[self.direction]
+        if isinstance(self.direction, str):
+            return DIRECTIONS[self.direction]
+        return self.direction
 
     def to_dict(self) -> dict[str, Any]:
         d = asdict(self)
         d["leg_order"] = None if self.leg_order is None else list(self.leg_order)
-        if not self.torque_noise:  # noise-free scenarios are stored as they always were
-            del d["torque_noise"]
+        for name in ("torque_noise", "gait_spread"):  # 0: stored as they always were
+            if not d[name]:
+                del d[name]
         return d
 
     def noise_seed(self) -> list[int]:

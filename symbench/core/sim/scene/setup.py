@@ -28,6 +28,10 @@ from symbench.core.symmetry.legs import MIRROR_Y, base_map
 SEED_OFFSET = 0.01  # m
 SEED_LINVEL = 0.02  # m/s
 SEED_ANGVEL = 0.05  # rad/s
+# Each step's own swing height and goal (`Scenario.gait_spread`): drawn for this many step
+# slots, whatever the climb's length, so a climb's draws do not depend on its duration (a
+# 10 s climb has at most 27 slots; later slots repeat the last draw).
+GAIT_SLOTS = 64
 
 
 Gait = tuple[float | None, float | None, tuple[int, ...] | None]
@@ -87,6 +91,7 @@ class Climb:
     order: tuple[int, ...] | None = None
     seed: int = 0
     mirrored: bool = False  # the seeded perturbation mirrored across the slope line
+    gait_spread: float = 0.0  # relative spread of each step's swing height and goal
 
     @classmethod
     def from_scenario(cls, scenario: Scenario, spec: RobotSpec | None = None) -> Climb:
@@ -104,7 +109,15 @@ class Climb:
         )
         assert direction is not None  # a scenario always names its direction
         arena = Arena(scenario.inclination_deg, scenario.heading_deg)
-        return cls(spec, arena, scenario.yaw_deg, direction, order, scenario.seed)
+        return cls(
+            spec,
+            arena,
+            scenario.yaw_deg,
+            direction,
+            order,
+            scenario.seed,
+            gait_spread=scenario.gait_spread,
+        )
 
     def turned(self, steps: int = 1) -> Climb:
         """The same climb with the base turned by `steps` symmetry steps and the legs
@@ -156,6 +169,22 @@ class Climb:
         angvel = self.arena.normal * (side[1] * rng.uniform(-SEED_ANGVEL, SEED_ANGVEL))
         return offset, linvel, angvel
 
+    def step_draws(self) -> tuple[np.ndarray | None, np.ndarray | None]:
+        """Each step slot's swing height (m) and goal offset (m, along and across the step
+        direction): uniform within +-`gait_spread` of the nominal swing height and step length,
+        from a stream of the climb's seed apart from the start perturbation's. Rotated twins
+        share them (the slots, not the legs, draw); a mirrored climb steps to the other side.
+        Without spread: the nominal height and no offset, the fixed gait of earlier data."""
+        gait, spread = self.spec.gait, self.gait_spread
+        if not spread:
+            return None, None
+        rng = np.random.default_rng([self.seed, 1])
+        heights = gait.swing_height * (1.0 + rng.uniform(-spread, spread, GAIT_SLOTS))
+        offsets = gait.step_length * rng.uniform(-spread, spread, (GAIT_SLOTS, 2))
+        if self.mirrored:
+            offsets[:, 1] = -offsets[:, 1]
+        return heights, offsets
+
     def plan(self) -> GaitPlan:
         spec, r_wb = self.spec, self.base_rotation
         beta = np.radians(self.direction_deg)
@@ -165,8 +194,16 @@ class Climb:
         soles = self._nominal_soles_body() + np.outer(
             GaitPlan.stagger(spec, self.leg_order), dir_body
         )
+        heights, offsets = self.step_draws()
         return GaitPlan(
-            spec, self.leg_order, r_wb @ dir_body, self.arena.normal, base, base + soles @ r_wb.T
+            spec,
+            self.leg_order,
+            r_wb @ dir_body,
+            self.arena.normal,
+            base,
+            base + soles @ r_wb.T,
+            heights,
+            offsets,
         )
 
     def _nominal_soles_body(self) -> np.ndarray:
