@@ -186,3 +186,20 @@ def test_data_info_shows_the_overlap_per_split(smoke_hexa):
     assert shown.exit_code == 0 and "image overlap" in shown.stdout
     quiet = invoke("data", "info", smoke_hexa.dataset_id, "--json", "--no-overlap")
     assert "image_overlap" not in json.loads(quiet.stdout)["splits"]["iid"]
+
+
+def test_imported_logs_of_other_lengths_are_images_on_their_aligned_rows(home):
+    """magneto's logged gaits (tests/data/symmetry/logs): climb 1 is climb 0 turned by the
+    half turn, its log 42 rows longer; climbs 0 and 2 step in other
+    orders. The verdict reads only the raw states, aligned on their lift-offs."""
+    from pathlib import Path
+
+    from symbench.core.data.importing.importer import import_logs
+
+    ds = import_logs(Path(__file__).parent / "logs" / "magneto-gaits", "gaits")
+    climbs = DatasetOverlap(ds).climbs()
+    assert len(climbs.raw[0]["t"]) != len(climbs.raw[1]["t"])
+    group, heading = CLASSES.index("group"), CLASSES.index("heading")
+    assert climbs.class_error(0, 1, group) < EXACT_TOLERANCE
+    assert climbs.class_error(0, 1, heading) > NEAR_TOLERANCE
+    assert climbs.class_error(0, 2, CLASSES.index("mirror")) > NEAR_TOLERANCE

@@ -129,6 +129,11 @@ class Climbs:
             for i, r in self.raw.items()
         }
 
+    @property
+    def compared(self) -> int:
+        """How many (candidate, climb, class tier) errors have been computed so far."""
+        return len(self._errors)
+
     def bounds(self, b: int, candidates: Sequence[int]) -> np.ndarray:
         """Per candidate, the lower bound on its error as an image of `b` (see the module)."""
         if not candidates:

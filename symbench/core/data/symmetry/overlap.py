@@ -178,7 +178,7 @@ class DatasetOverlap:
         empty = [name for name in ("train", "test") if not ids[name]]
         if empty:
             raise SymbenchError(f"image overlap of {where}: no {' or '.join(empty)} climbs")
-        before = len(climbs._errors)
+        before = climbs.compared
         sides = {}
         for name in SIDES:
             if not ids[name]:
@@ -203,7 +203,7 @@ class DatasetOverlap:
             climbs.mirrors.name,
             sides,
             time.perf_counter() - start,
-            len(climbs._errors) - before,
+            climbs.compared - before,
         )
 
 
