@@ -121,6 +121,10 @@ def check_reading(template, metadata: bytes) -> None:
                 assert counts == {"error": str(error)}, name
                 continue
             named = (("train", parts.train), ("val", parts.val), ("test", parts.test))
+            overlap = counts.pop("image_overlap")  # measured or refused in one line
+            assert "error" in overlap or {s: p["climbs"] for s, p in overlap["sides"].items()} == {
+                part: len(ids) for part, ids in named if len(ids)
+            }, name
             assert counts == {
                 part: {
                     "trajectories": len(ids),

@@ -94,6 +94,13 @@ def _print_reference(dataset_id: str, content_hash: str) -> None:
 )
 @click.option("--train", "train_values", default=None, type=CommaList())
 @click.option("--test", "test_values", default=None, type=CommaList())
+@click.option(
+    "--overlap/--no-overlap",
+    default=True,
+    show_default=True,
+    help="Measure each split's image overlap: held-out climbs that are images of training "
+    "climbs per symmetry class (seconds per split on a small dataset).",
+)
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
 def info_command(
     dataset_id: str,
@@ -101,15 +108,16 @@ def info_command(
     split_by: str | None,
     train_values: list[str] | None,
     test_values: list[str] | None,
+    overlap: bool,
     as_json: bool,
 ) -> None:
-    """Trajectories, samples, failures, provenance and per-split counts and scenario values
-    of a cached dataset."""
+    """Trajectories, samples, failures, provenance, per-split counts and scenario values, and
+    each split's image overlap, of a cached dataset."""
     from symbench.core.data.dataset import load_dataset
     from symbench.core.data.info import dataset_info
 
     column = split_option(None, split_by, train_values, test_values)
-    info = dataset_info(load_dataset(dataset_id), seed, [column] if column else [])
+    info = dataset_info(load_dataset(dataset_id), seed, [column] if column else [], overlap)
     if as_json:
         click.echo(json.dumps(info, indent=2))
         return
@@ -150,6 +158,47 @@ def info_command(
                 name, *(_values(counts[p]["scenarios"]) for p in ("train", "val", "test"))
             )
     console.print(sides)
+    if overlap:
+        _print_overlap(info["splits"])
+
+
+def _print_overlap(splits: dict[str, dict]) -> None:
+    """Per split and side, each class's exact / near image shares and distinct motions."""
+    from rich.markup import escape
+
+    from symbench.core.data.symmetry.compare import CLASSES, EXACT_TOLERANCE, NEAR_TOLERANCE
+
+    table = Table(
+        title="image overlap: share of held-out climbs that are images of a training climb, "
+        "exact/near (distinct motions on the side, exact~near)",
+        caption=f"exact: relative RMS error below {EXACT_TOLERANCE:g}, near: below "
+        f"{NEAR_TOLERANCE:g}; classes: none (world frame), heading (scene turned about "
+        "gravity), group (legs relabelled, base turned, and heading), mirror (with mirrors)",
+    )
+    for column in ("split", "side", *CLASSES):
+        left = column in ("split", "side")
+        table.add_column(column, justify="left" if left else "right", no_wrap=not left)
+    for name, counts in splits.items():
+        found = counts.get("image_overlap")
+        if found is None:
+            continue
+        if "error" in found:
+            table.add_row(name, "", f"[red]{escape(found['error'])}[/]", *[""] * (len(CLASSES) - 1))
+            continue
+        for side, part in found["sides"].items():
+            cells = []
+            for cls in CLASSES:
+                row = part["classes"][cls]
+                motions = str(row["distinct_motions_exact"])
+                if row["distinct_motions_near"] != row["distinct_motions_exact"]:
+                    motions += f"~{row['distinct_motions_near']}"
+                if "exact_image_share" in row:
+                    exact, near = row["exact_image_share"], row["near_image_share"]
+                    cells.append(f"{exact * 100:.0f}/{near * 100:.0f}% ({motions})")
+                else:
+                    cells.append(f"({motions})")
+            table.add_row(name if side == "train" else "", f"{side} ({part['climbs']})", *cells)
+    console.print(table)
 
 
 def _values(scenarios: dict[str, list]) -> str:

@@ -1,5 +1,6 @@
 """What `symbench data info` reports: sizes, failures, provenance, every registered split's
-counts and the scenario values on each side of each split."""
+counts, the scenario values on each side of each split and its image overlap (how many
+held-out climbs are images of training climbs, per symmetry class: symmetry/overlap.py)."""
 
 from __future__ import annotations
 
@@ -10,6 +11,7 @@ import numpy as np
 
 from symbench.core.common.errors import SymbenchError
 from symbench.core.data.dataset import Dataset
+from symbench.core.data.symmetry.overlap import DatasetOverlap
 from symbench.core.plugin.registry import collect
 
 SCENARIO_COLUMNS = ("inclination_deg", "heading_deg", "yaw_deg", "direction", "leg_order")
@@ -62,11 +64,28 @@ def split_counts(ds: Dataset, split: str, seed: int) -> dict[str, Any]:
     return out
 
 
-def dataset_info(ds: Dataset, seed: int = 0, splits: Sequence[str] = ()) -> dict[str, Any]:
+def split_image_overlap(overlap: DatasetOverlap, split: str, seed: int) -> dict[str, Any]:
+    """The split's image overlap as JSON, or {"error": one line} when it cannot be measured."""
+    try:
+        return overlap.split(split, seed).to_dict()
+    except SymbenchError as exc:
+        return {"error": str(exc)}
+
+
+def dataset_info(
+    ds: Dataset, seed: int = 0, splits: Sequence[str] = (), overlap: bool = True
+) -> dict[str, Any]:
     """Everything `data info` shows; `splits` adds column splits (or any split by name) to
-    the registered ones."""
+    the registered ones; `overlap` measures each split's image overlap (seconds per split
+    on a small dataset; the climbs are loaded and pairs compared once for all splits)."""
     meta = ds.metadata
     names = list(collect("splits")) + [s for s in splits if s not in collect("splits")]
+    counts = {name: split_counts(ds, name, seed) for name in names}
+    if overlap:
+        measured = DatasetOverlap(ds)
+        for name, part in counts.items():
+            if "error" not in part:
+                part["image_overlap"] = split_image_overlap(measured, name, seed)
     return {
         "id": ds.id,
         "robot": ds.robot,
@@ -84,6 +103,6 @@ def dataset_info(ds: Dataset, seed: int = 0, splits: Sequence[str] = ()) -> dict
         "unknown_columns": meta.get("unknown_columns", []),
         "import": meta.get("import"),
         "scenarios": scenario_values(ds, ds.trajectory_ids),
-        "splits": {name: split_counts(ds, name, seed) for name in names},
+        "splits": counts,
         "split_seed": seed,
     }

@@ -71,6 +71,12 @@ import numpy as np
 
 from symbench.core.common.atomic import write_bytes_atomic
 from symbench.core.common.errors import SymbenchError
+from symbench.core.data.symmetry.alignment import (
+    Alignment,
+    align_pair,
+    aligned_rows,
+    difference,
+)
 from symbench.core.data.symmetry.raw_action import act_on_raw, base_map
 from symbench.core.data.views.frames import LegFrames
 from symbench.core.robot.specs import RobotSpec
@@ -94,28 +100,9 @@ READING_NAMES = {  # how `symbench data symmetry` names each reading of the scen
     "simulator": "the simulator's input",
     "recorded": "recorded (leg order and direction as stepped)",
 }
-ALIGN_TOLERANCE = 0.1  # share of rows whose flags may differ in an aligned pair
 UNINFORMATIVE_FLOOR = 0.5  # a relative floor this large is no noise: the repeats differ
 # the scenario fields that may tell two motions apart, named when repeats evidently differ
 TELLING_FIELDS = ("leg_order", "direction", "seed", "inclination_deg", "heading_deg")
-
-
-@dataclass(frozen=True)
-class Alignment:
-    """How two logs were lined up: row i of the first is row i + `shift` of the second."""
-
-    shift: int = 0
-    aligned: bool = True
-    how: str = "in phase (no lift-off)"
-    flag_mismatch: float | None = None  # share of the compared rows whose flags differ
-
-    def to_dict(self) -> dict[str, Any]:
-        return {
-            "shift_rows": self.shift,
-            "aligned": self.aligned,
-            "how": self.how,
-            "flag_mismatch": self.flag_mismatch,
-        }
 
 
 @dataclass(frozen=True)
@@ -315,94 +302,8 @@ def find_pairs(
     return pairing.images, pairing.repeats
 
 
-def _alignment_flag(raw: Mapping[str, np.ndarray], unknown: Sequence[str]) -> str | None:
-    """The flag lift-offs are read from: the magnet's, else the contact's (known ones)."""
-    for flag in ("magnet", "contact"):
-        if flag in raw and flag not in unknown:
-            values = np.asarray(raw[flag])
-            if np.isfinite(values).all():
-                return flag
-    return None
-
-
-def _lift_offs(flags: np.ndarray) -> list[tuple[int, int]]:
-    """(row, leg) of each lift-off: a row where the leg's flag is 0 after a 1."""
-    x = np.asarray(flags).reshape(len(flags), -1) > 0.5
-    rows, legs = np.nonzero(x[:-1] & ~x[1:])
-    return sorted((int(r) + 1, int(leg)) for r, leg in zip(rows, legs))
-
-
-def _overlap(n_a: int, n_b: int, shift: int) -> tuple[slice, slice]:
-    """The rows of a and of b that line up when row i of a is row i + shift of b."""
-    start_a = max(0, -shift)
-    rows = max(0, min(n_a - start_a, n_b - (start_a + shift)))
-    return slice(start_a, start_a + rows), slice(start_a + shift, start_a + shift + rows)
-
-
-def _mismatch(x: np.ndarray, y: np.ndarray) -> float:
-    if not len(x):
-        return 1.0
-    xx = np.asarray(x).reshape(len(x), -1) > 0.5
-    yy = np.asarray(y).reshape(len(y), -1) > 0.5
-    return float(np.mean(np.any(xx != yy, axis=-1)))
-
-
-def align(x: np.ndarray | None, y: np.ndarray | None) -> Alignment:
-    """How flag arrays `x` (T, n) and `y` (T', n) of one motion line up (see the module's
-    docstring): the shift from x's rows to y's, or why there is none."""
-    if x is None or y is None:
-        return Alignment(0, False, "flags unknown: compared row by row")
-    lifts_x, lifts_y = _lift_offs(x), _lift_offs(y)
-    if not lifts_x and not lifts_y:
-        return Alignment(0, True, "in phase (no lift-off)", _mismatch(*_rows(x, y, 0)))
-    first_x: dict[int, int] = {}
-    first_y: dict[int, int] = {}
-    for row, leg in lifts_x:
-        first_x.setdefault(leg, row)
-    for row, leg in lifts_y:
-        first_y.setdefault(leg, row)
-    shifts = {0}
-    shifts |= {row - first_x[leg] for row, leg in lifts_y if leg in first_x}
-    shifts |= {first_y[leg] - row for row, leg in lifts_x if leg in first_y}
-    least = min(len(x), len(y)) / 2
-    best: tuple[float, int] | None = None
-    for shift in sorted(shifts, key=lambda s: (abs(s), s)):
-        sx, sy = _overlap(len(x), len(y), shift)
-        if sx.stop - sx.start < least:
-            continue
-        mismatch = _mismatch(x[sx], y[sy])
-        if best is None or mismatch < best[0]:
-            best = (mismatch, shift)
-    if best is None or best[0] > ALIGN_TOLERANCE:
-        share = _mismatch(*_rows(x, y, 0))
-        return Alignment(
-            0, False, "flags disagree at every shift tried: compared row by row", share
-        )
-    mismatch, shift = best
-    how = "in phase" if shift == 0 else "on the first lift-off"
-    return Alignment(shift, True, how, mismatch)
-
-
-def _rows(x: np.ndarray, y: np.ndarray, shift: int) -> tuple[np.ndarray, np.ndarray]:
-    sx, sy = _overlap(len(x), len(y), shift)
-    return x[sx], y[sy]
-
-
 def _columns(raw: Mapping[str, np.ndarray]) -> list[str]:
     return [c for cols in GROUPS.values() for c in cols if c in raw]
-
-
-def _difference(
-    moved: Mapping[str, np.ndarray], b: Mapping[str, np.ndarray], column: str, shift: int = 0
-) -> tuple[np.ndarray, np.ndarray]:
-    """moved - b over the rows that line up (row i of moved is row i + shift of b), and b's
-    values there, flattened per row."""
-    x, y = _rows(np.asarray(moved[column], np.float64), np.asarray(b[column], np.float64), shift)
-    rows = len(x)
-    if column == "base_quat":  # q and -q are one orientation
-        flip = np.sum(x * y, axis=-1, keepdims=True) < 0
-        x = np.where(flip, -x, x)
-    return (x - y).reshape(rows, -1), y.reshape(rows, -1)
 
 
 def _noise_sigma(x: np.ndarray) -> np.ndarray:
@@ -462,12 +363,12 @@ def measure(
     for a, b, g in images:
         moved = act_on_raw(g, trajectories[a], frames)
         target = trajectories[b]
-        alignment = _align_pair(moved, target, unknown)
+        alignment = align_pair(moved, target, unknown)
         shift = alignment.shift
-        rows = _rows(moved["t"], target["t"], shift)[0].shape[0]
+        rows = aligned_rows(moved["t"], target["t"], shift)[0].shape[0]
         rel = {}
         for column in columns:
-            diff, values = _difference(moved, target, column, shift)
+            diff, values = difference(moved, target, column, shift)
             sq_err[column] += float(np.sum(diff**2))
             sq_val[column] += float(np.sum(values**2))
             count[column] += diff.size
@@ -476,7 +377,7 @@ def measure(
             rel[column] = float(np.sqrt(np.mean(diff**2))) / scale if scale > 0 else 0.0
         for flag in FLAGS:
             if flag in target and flag not in unknown:
-                x, y = _rows(
+                x, y = aligned_rows(
                     np.asarray(moved[flag], np.float64), np.asarray(target[flag], np.float64), shift
                 )
                 if np.isfinite(x).all() and np.isfinite(y).all():
@@ -484,7 +385,7 @@ def measure(
         flag_rows += rows
         per_pair_columns.append((a, b, g, rows, rel, alignment))
     report.repeat_alignments = [
-        (a, b, _align_pair(trajectories[a], trajectories[b], unknown)) for a, b in repeats
+        (a, b, align_pair(trajectories[a], trajectories[b], unknown)) for a, b in repeats
     ]
     shifts = {(a, b): al.shift for a, b, al in report.repeat_alignments}
     floor = _floor(
@@ -553,15 +454,6 @@ def _spec_of(robot: str) -> RobotSpec | None:
         return None
 
 
-def _align_pair(
-    a: Mapping[str, np.ndarray], b: Mapping[str, np.ndarray], unknown: Sequence[str]
-) -> Alignment:
-    flag = _alignment_flag(b, unknown)
-    if flag is None or flag not in a:
-        return align(None, None)
-    return align(np.asarray(a[flag]), np.asarray(b[flag]))
-
-
 def _missing_fields(
     scenarios: Sequence[Mapping[str, Any]], used: set[int], ids: Sequence[int], stepping: bool
 ) -> str:
@@ -595,7 +487,7 @@ def _floor(
             sq, n = 0.0, 0
             for a, b in repeats:
                 shift = (shifts or {}).get((a, b), 0)
-                diff, _ = _difference(trajectories[a], trajectories[b], column, shift)
+                diff, _ = difference(trajectories[a], trajectories[b], column, shift)
                 sq, n = sq + float(np.sum(diff**2)), n + diff.size
             out[column] = float(np.sqrt(sq / max(n, 1)))
             continue

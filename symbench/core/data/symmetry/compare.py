@@ -1,0 +1,207 @@
+"""Whether one climb is an image of another under a class of symmetries, judged on raw states.
+
+**Classes** (what a model respects, nested from none to mirror):
+
+- `none`: nothing; an image is the same climb, world frame and leg labels as they are (a
+  world-frame model such as `ffnn` sees nothing else).
+- `heading`: turning the whole scene about gravity (the slope's heading), the angle free
+  (leg-frame models such as `ffnn-leg`).
+- `group`: the robot's rotation group acting as `act_on_raw` does (legs relabelled, the base
+  turned about its own z), each element tried, then the heading as above (`sdnn`, `sdgnn`).
+- `mirror`: the group with the mirrors the geometry has (`spec.geometry_group`; a mirror also
+  mirrors the scene in a vertical plane), then the heading (`sdnn --size mirror=1`).
+
+**The error** of a candidate `a` as an image of `b` under an element g: `g . a` and `b` are
+aligned on their lift-offs (`alignment.align_pair`, as `symbench data symmetry` does) and
+compared over the rows that line up. With the heading free, the world-frame columns of
+`g . a` are first turned about world z by the angle that best fits `b`'s (the closed-form
+least-squares angle over positions, velocities, acceleration and the base axes, each column
+weighted by 1 / its scale squared). Per column, the RMS difference over the rows and
+channels is divided by the column's scale: its RMS over every climb being compared (its
+typical magnitude in this dataset; quaternions up to sign). Columns are gathered as in
+`report.GROUPS` (joint states, torques, base); the error is the largest group's RMS of its
+columns' relative errors, so every part of the state must match. A class's error is the
+least over its elements.
+
+**Prefilter.** The RMS over a climb of each column's per-row norm is unchanged by every
+element and by the heading (relabelling, sign flips and rotations keep norms), and by the
+triangle inequality its difference, relative to the scale, bounds the column's error from
+below when both climbs are compared over all their rows. Pairs whose bound exceeds
+`NEAR_TOLERANCE * PREFILTER_SLACK` are never compared (the slack covers climbs compared on
+part of their rows); the others are compared in the order of their bounds, so an image is
+usually found first.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from symbench.core.common.errors import SymbenchError
+from symbench.core.data.symmetry.alignment import align_pair, aligned_rows, difference
+from symbench.core.data.symmetry.raw_action import act_on_raw
+from symbench.core.data.symmetry.report import GROUPS
+from symbench.core.data.views.frames import LegFrames, quat_multiply, quat_to_matrix, yaw_quat
+from symbench.core.symmetry.groups import GroupElement, LegGroup
+
+CLASSES = ("none", "heading", "group", "mirror")
+# A generated climb's rotated twin matches it to ~1e-13 of the signal (float rounding of a
+# turned simulation); 1e-6 leaves room for float32 storage and resampling rounding, and is
+# far below any physical difference between two motions.
+EXACT_TOLERANCE = 1e-6
+# A test climb within 5 % relative RMS of an image of a training climb is the same motion
+# for a learned model (its torque errors are of that order); a climb drawn with another
+# swing height, goal offset or slope differs by more.
+NEAR_TOLERANCE = 0.05
+# The prefilter's bound holds for climbs compared over all their rows; twice the near
+# tolerance lets a pair compared over part of its rows (other lengths or phases) through.
+PREFILTER_SLACK = 2.0
+COMPARED = tuple(c for cols in GROUPS.values() for c in cols)
+WORLD_VECTORS = ("base_pos", "base_linvel", "base_angvel", "base_linacc")
+FLAGS = ("contact", "magnet")
+
+
+def class_tiers(group: LegGroup, mirrors: LegGroup) -> list[list[tuple[GroupElement, bool]]]:
+    """Per class, the (element, heading free) tried beyond those of the narrower classes."""
+    identity = group.identity
+    rotations = [g for g in group if not g.reflect and g != identity]
+    reflections = [g for g in mirrors if g.reflect]
+    return [[(identity, False)], [(identity, True)], [(g, True) for g in rotations],
+            [(g, True) for g in reflections]]  # fmt: skip
+
+
+def _heading_angle(
+    moved: Mapping[str, np.ndarray],
+    b: Mapping[str, np.ndarray],
+    shift: int,
+    scales: Mapping[str, float],
+) -> float:
+    """The turn about world z (rad) that best carries moved's world-frame columns onto b's."""
+    dot = cross = 0.0
+    pairs = [(c, 1.0 / scales[c] ** 2) for c in WORLD_VECTORS if scales[c] > 0]
+    for column, weight in pairs:
+        x, y = aligned_rows(moved[column], b[column], shift)
+        dot += weight * float(np.sum(x[:, 0] * y[:, 0] + x[:, 1] * y[:, 1]))
+        cross += weight * float(np.sum(x[:, 0] * y[:, 1] - x[:, 1] * y[:, 0]))
+    x, y = aligned_rows(quat_to_matrix(moved["base_quat"]), quat_to_matrix(b["base_quat"]), shift)
+    dot += float(np.sum(x[:, 0, :] * y[:, 0, :] + x[:, 1, :] * y[:, 1, :]))
+    cross += float(np.sum(x[:, 0, :] * y[:, 1, :] - x[:, 1, :] * y[:, 0, :]))
+    return float(np.arctan2(cross, dot))
+
+
+def turn_about_gravity(raw: Mapping[str, np.ndarray], angle: float) -> dict[str, np.ndarray]:
+    """The world-frame columns of `raw` turned by `angle` (rad) about world z (the compared
+    columns only: the others are not needed)."""
+    c, s = np.cos(angle), np.sin(angle)
+    rot = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+    out = dict(raw)
+    for column in WORLD_VECTORS:
+        out[column] = raw[column] @ rot.T
+    out["base_quat"] = quat_multiply(yaw_quat(angle), raw["base_quat"])
+    return out
+
+
+@dataclass
+class Climbs:
+    """Raw climbs by id, with what comparing them needs: scales, invariant summaries and the
+    errors already computed (kept across splits: `data info` asks about many)."""
+
+    raw: dict[int, dict[str, np.ndarray]]
+    group: LegGroup
+    mirrors: LegGroup
+    frames: LegFrames
+    unknown: Sequence[str] = ()
+    scales: dict[str, float] = field(init=False)
+    summary: dict[int, np.ndarray] = field(init=False)
+    _errors: dict[tuple[int, int, int], float] = field(init=False, default_factory=dict)
+
+    def __post_init__(self) -> None:
+        self.tiers = class_tiers(self.group, self.mirrors)
+        self.scales = {}
+        for column in COMPARED:
+            sq = sum(float(np.sum(r[column] ** 2)) for r in self.raw.values())
+            n = sum(r[column].size for r in self.raw.values())
+            self.scales[column] = float(np.sqrt(sq / max(n, 1)))
+        self.summary = {
+            i: np.array([np.sqrt(np.mean(r[c] ** 2)) for c in COMPARED])
+            for i, r in self.raw.items()
+        }
+
+    @property
+    def compared(self) -> int:
+        """How many (candidate, climb, class tier) errors have been computed so far."""
+        return len(self._errors)
+
+    def bounds(self, b: int, candidates: Sequence[int]) -> np.ndarray:
+        """Per candidate, the lower bound on its error as an image of `b` (see the module)."""
+        if not candidates:
+            return np.zeros(0)
+        s = np.stack([self.summary[a] for a in candidates])
+        scale = np.array([self.scales[c] for c in COMPARED])
+        rel = np.abs(s - self.summary[b]) / np.where(scale > 0, scale, 1.0)
+        per_group = []
+        start = 0
+        for cols in GROUPS.values():
+            per_group.append(np.sqrt(np.mean(rel[:, start : start + len(cols)] ** 2, axis=1)))
+            start += len(cols)
+        return np.max(np.stack(per_group, axis=1), axis=1)
+
+    def candidates(self, b: int, pool: Sequence[int]) -> list[int]:
+        """The climbs of `pool` that may be images of `b`, likeliest first."""
+        pool = [a for a in pool if a != b]
+        bound = self.bounds(b, pool)
+        keep = np.nonzero(bound <= NEAR_TOLERANCE * PREFILTER_SLACK)[0]
+        return [pool[k] for k in keep[np.argsort(bound[keep], kind="stable")]]
+
+    def element_error(self, a: int, b: int, g: GroupElement, heading: bool) -> float:
+        """The error of climb a, acted on by g (heading free or not), as climb b."""
+        moved = self.raw[a] if g == self.group.identity else act_on_raw(g, self.raw[a], self.frames)
+        shift = align_pair(moved, self.raw[b], self.unknown).shift
+        if heading:
+            moved = turn_about_gravity(
+                moved, _heading_angle(moved, self.raw[b], shift, self.scales)
+            )
+        rel = {}
+        for column in COMPARED:
+            diff, _ = difference(moved, self.raw[b], column, shift)
+            scale = self.scales[column]
+            rms = float(np.sqrt(np.mean(diff**2))) if diff.size else np.inf
+            rel[column] = rms / scale if scale > 0 else (0.0 if rms == 0 else np.inf)
+        return max(float(np.sqrt(np.mean([rel[c] ** 2 for c in cols]))) for cols in GROUPS.values())
+
+    def tier_error(self, a: int, b: int, tier: int) -> float:
+        """The least error over tier `tier`'s elements (stops below `EXACT_TOLERANCE`)."""
+        key = (a, b, tier)
+        if key not in self._errors:
+            best = np.inf
+            for g, heading in self.tiers[tier]:
+                best = min(best, self.element_error(a, b, g, heading))
+                if best < EXACT_TOLERANCE:
+                    break
+            self._errors[key] = best
+        return self._errors[key]
+
+    def class_error(self, a: int, b: int, cls: int, below: float = EXACT_TOLERANCE) -> float:
+        """The least error of a as an image of b under class `cls` (an index into CLASSES),
+        stopping at the first tier below `below`."""
+        best = np.inf
+        for tier in range(cls + 1):
+            best = min(best, self.tier_error(a, b, tier))
+            if best < below:
+                break
+        return best
+
+
+def check_columns(raw: Mapping[str, np.ndarray], unknown: Sequence[str], where: str) -> None:
+    """Refuse raw states that lack a compared column or declare one unknown."""
+    missing = [c for c in COMPARED if c not in raw]
+    if missing:
+        raise SymbenchError(f"{where}: raw column(s) {', '.join(missing)} missing")
+    unknown_compared = [c for c in COMPARED if c in unknown]
+    if unknown_compared:
+        raise SymbenchError(
+            f"{where}: column(s) {', '.join(unknown_compared)} declared unknown at import "
+            "(images are judged on every raw state column)"
+        )
