@@ -51,6 +51,7 @@ from .core.data.symmetry.raw_action import (
     rotate_scene_about_gravity as rotate_scene_about_gravity,
     rotate_scene as rotate_scene,
 )
+from .core.data.symmetry.overlap import split_overlap as split_overlap
 from .core.sim.scene.scenario import Scenario as Scenario
 from .core.sim.climb.rollout import simulate as simulate
 from .core.sim.tracking.learned_control import (

@@ -135,6 +135,24 @@ def smoke_hexa(home):
     return generate("hexa", "smoke", simulator=fake_simulate, show_progress=False)
 
 
+@pytest.fixture(scope="session")
+def simulated_smoke_hexa(tmp_path_factory):
+    """hexa's smoke dataset, simulated for real (about ten seconds), in a private home: its
+    rotated and heading-turned climbs are exact images, which the stand-in's are not."""
+    import os
+
+    from symbench.core.data.dataset import load_dataset
+
+    before = os.environ.get("SYMBENCH_HOME")
+    os.environ["SYMBENCH_HOME"] = str(tmp_path_factory.mktemp("simulated") / "home")
+    report = generate("hexa", "smoke", show_progress=False)
+    yield load_dataset(report.dataset_id)
+    if before is None:
+        del os.environ["SYMBENCH_HOME"]
+    else:
+        os.environ["SYMBENCH_HOME"] = before
+
+
 @pytest.fixture
 def make_record():
     return record_dict

@@ -29,8 +29,15 @@ if TYPE_CHECKING:
 
 # The full evaluation (sweeps, boards); `symbench run` starts with the first-result set, which
 # needs one training only: generalization trains twice more and closed-loop once more.
-DEFAULT_EVALUATORS = ("torque-error", "equivariance", "invariance", "generalization", "closed-loop")
-FIRST_RESULT_EVALUATORS = ("torque-error", "equivariance", "invariance")
+DEFAULT_EVALUATORS = (
+    "torque-error",
+    "equivariance",
+    "invariance",
+    "generalization",
+    "closed-loop",
+    "image-overlap",
+)
+FIRST_RESULT_EVALUATORS = ("torque-error", "equivariance", "invariance", "image-overlap")
 
 
 @dataclass(frozen=True)

@@ -9,6 +9,7 @@ from symbench.plugins.evaluators import (
     data_symmetry,
     equivariance,
     generalization,
+    image_overlap,
     invariance,
     sample_efficiency,
     torque_error,
@@ -22,6 +23,7 @@ MODULES = (
     sample_efficiency,
     closed_loop,
     data_symmetry,
+    image_overlap,
 )
 # What each needs from the dataset beyond its test samples (symbench.EVALUATOR_NEEDS); a run
 # on a dataset without it skips the evaluator with the reason. The closed-loop evaluator
@@ -34,6 +36,7 @@ NEEDS: dict[str, tuple[str, ...]] = {
     sample_efficiency.NAME: (),
     closed_loop.NAME: ("simulator", "variant:next"),
     data_symmetry.NAME: ("raw", "scenarios"),  # pairs climbs by their scenarios
+    image_overlap.NAME: ("raw",),  # compares raw states after relabelling
 }
 
 

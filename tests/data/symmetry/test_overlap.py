@@ -10,7 +10,6 @@ shares and motion counts its grid implies (on a wall the two headings are images
 from __future__ import annotations
 
 import json
-import os
 
 import numpy as np
 import pytest
@@ -114,22 +113,6 @@ def test_distinct_motions_gather_images_per_class():
     assert near == [5, 4, 3, 2]
 
 
-@pytest.fixture(scope="module")
-def smoke_v6(tmp_path_factory):
-    """hexa's v6 smoke dataset, simulated (about ten seconds), in a private home."""
-    from symbench.core.data.dataset import load_dataset
-    from symbench.core.data.generation.generate import generate
-
-    before = os.environ.get("SYMBENCH_HOME")
-    os.environ["SYMBENCH_HOME"] = str(tmp_path_factory.mktemp("overlap") / "home")
-    report = generate("hexa", "smoke", show_progress=False)
-    yield load_dataset(report.dataset_id)
-    if before is None:
-        del os.environ["SYMBENCH_HOME"]
-    else:
-        os.environ["SYMBENCH_HOME"] = before
-
-
 def _motion(scenario: dict, cls: str) -> tuple:
     """What the smoke grid says a climb is up to `cls`: its yaw and heading (none), its yaw
     (heading: on a wall the two headings are images), its yaw modulo hexa's 60 degrees."""
@@ -138,8 +121,8 @@ def _motion(scenario: dict, cls: str) -> tuple:
 
 
 @pytest.mark.parametrize("split", ["iid", "unseen-rotation", "orbit-rotation", "unseen-heading"])
-def test_smoke_shares_and_motions_follow_the_grid(smoke_v6, split):
-    ds = smoke_v6
+def test_smoke_shares_and_motions_follow_the_grid(simulated_smoke_hexa, split):
+    ds = simulated_smoke_hexa
     by_id = dict(zip(ds.trajectory_ids.tolist(), ds.scenarios, strict=True))
     parts = ds.split_indices(split, 0)
     found = DatasetOverlap(ds).split(split, 0).to_dict()
