@@ -17,7 +17,7 @@ Writing evaluators
     sample_efficiency_png, held_out_scenarios, reference_scenarios, oracle_policy, model_jobs,
     dataset_symmetry
 Writing splits
-    SplitContext, carve_validation
+    SplitContext, carve_validation, control_of
 Reading a preset's sizes, budgets and horizons (`symbench presets`)
     Preset, PRESETS, preset
 Using symbench from Python (a plugin's own tests)
@@ -80,6 +80,7 @@ _PUBLIC: dict[str, str] = {
     "sample_efficiency_png": "symbench.core.board.plots:sample_efficiency_png",
     "SplitContext": "symbench.core.data.splits:SplitContext",
     "carve_validation": "symbench.core.data.splits:carve_validation",
+    "control_of": "symbench.core.data.splits:control_of",
     "Preset": "symbench.core.config.presets:Preset",
     "PRESETS": "symbench.core.config.presets:PRESETS",
     "preset": "symbench.core.config.presets:preset",
@@ -117,6 +118,7 @@ __all__ = [
     "act_on_raw",
     "build_view",
     "carve_validation",
+    "control_of",
     "dataset_symmetry",
     "feedforward_policy",
     "held_out_scenarios",
@@ -163,7 +165,7 @@ if TYPE_CHECKING:  # what type checkers and editors see
     from symbench.core.common.errors import SymbenchError
     from symbench.core.common.lazy import Lazy
     from symbench.core.config.presets import PRESETS, Preset, preset
-    from symbench.core.data.splits import SplitContext, carve_validation
+    from symbench.core.data.splits import SplitContext, carve_validation, control_of
     from symbench.core.data.symmetry.raw_action import (
         act_on_raw,
         rotate_scene,
