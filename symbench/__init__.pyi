@@ -71,7 +71,11 @@ from .core.sim.tracking.references import (
 from .core.data.symmetry.report import dataset_symmetry as dataset_symmetry
 
 # Writing splits
-from .core.data.splits import SplitContext as SplitContext, carve_validation as carve_validation
+from .core.data.splits import (
+    SplitContext as SplitContext,
+    carve_validation as carve_validation,
+    control_of as control_of,
+)
 
 # Reading a preset's sizes, budgets and horizons (`symbench presets`)
 from .core.config.presets import Preset as Preset, PRESETS as PRESETS, preset as preset

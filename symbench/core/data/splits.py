@@ -5,7 +5,9 @@ label: "train", "val", "test" or "unused". The core checks the result (one label
 non-empty train, val and test) and turns it into trajectory ids, so every model of a
 comparison sees exactly the same samples for a given dataset and seed. Validation always
 comes from the training side: `carve_validation` takes it out of the training trajectories.
-The standard splits themselves are a plugin (`symbench.plugins.splits`). A column split
+The standard splits themselves are a plugin (`symbench.plugins.splits`); a generalization
+split names its size-matched iid control (`SplitEntry.control`, read with `control_of`). A
+column split
 (`column_split("heading", ["0", "90"], ["180", "270"])`, named `heading_0_90_vs_180_270`)
 is resolved here from its name, for any dataset whose scenarios hold that column.
 """
@@ -25,6 +27,7 @@ from symbench.core.sim.scene.scenario import DIRECTIONS
 
 LABELS = ("train", "val", "test", "unused")
 VAL_FRACTION = 0.15
+_VERSION = re.compile(r"-v(\d+)$")
 
 
 @dataclass(frozen=True)
@@ -37,6 +40,13 @@ class SplitContext:
     n_samples: np.ndarray  # (T,) samples each trajectory contributes to a view
     rotation_order: int  # pure rotations in the robot's group: sector width 360 / this
     seed: int
+
+    @property
+    def version(self) -> int | None:
+        """The dataset version its id ends in (`hexa-climb-small-v6`: 6); None for an id
+        without one (imported logs, tests' own ids)."""
+        match = _VERSION.search(self.dataset_id)
+        return int(match.group(1)) if match else None
 
     def rng(self, purpose: str) -> np.random.Generator:
         """A generator fixed by the seed and `purpose`, independent of call order."""
@@ -62,6 +72,11 @@ class SplitIndices:
     train: np.ndarray
     val: np.ndarray
     test: np.ndarray
+
+    @property
+    def sizes(self) -> dict[str, int]:
+        """Trajectories (climbs) in each part: {"train": ..., "val": ..., "test": ...}."""
+        return {k: len(getattr(self, k)) for k in ("train", "val", "test")}
 
     def to_dict(self) -> dict[str, Any]:
         return {
@@ -248,6 +263,20 @@ def assign_column_split(split: ColumnSplit, context: SplitContext) -> np.ndarray
                 )
             labels[hit] = side
     return carve_validation(labels, context)
+
+
+def control_of(split: str) -> str | None:
+    """The size-matched iid control of a generalization split (`control-rotation` for
+    `unseen-rotation`): the same numbers of training, validation and test climbs drawn at
+    random from the same dataset with the same seed. The generalization gap of a model is its
+    test error on `split` over its test error on the control, seed by seed. None for a split
+    without one (`iid`, the fractions, the controls themselves, column splits); an error for
+    an unknown name."""
+    if parse_column_split(split) is not None:
+        return None
+    from symbench.core.plugin import registry
+
+    return registry.split(split).control
 
 
 def check_split(name: str) -> None:

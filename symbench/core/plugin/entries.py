@@ -162,16 +162,22 @@ class SplitEntry:
     """A split: `assign(context)` labels each trajectory train, val, test or unused.
 
     `context` is a `symbench.SplitContext` (scenarios, trajectory ids, sample counts, the
-    robot's rotation order and the seed); see docs/writing-plugins.md.
+    robot's rotation order and the seed); see docs/writing-plugins.md. `control` names the
+    split's size-matched iid control, if it has one (`symbench.control_of`).
     """
 
     name: str
     assign: Callable[..., Any]
     description: str = ""
+    control: str | None = None
 
     def __post_init__(self) -> None:
         _check_name("split", self.name)
         _check_callable("split", self.name, "assign", self.assign)
+        if self.control is not None:
+            _check_name(f"split '{self.name}': control", self.control)
+            if self.control == self.name:
+                raise InvalidEntryError(f"split '{self.name}' cannot be its own control")
 
 
 def describe(entry: Any) -> dict[str, Any]:

@@ -122,7 +122,8 @@ def test_cli_import_info_and_export(smoke_hexa, home, tmp_path):
     assert info["trajectories"] == 6 and info["failed"] == 0
     assert info["content_hash"] == smoke_hexa.content_hash
     refused = {name for name, counts in info["splits"].items() if "error" in counts}
-    assert refused == {"unseen-inclination", "unseen-gait"}  # smoke: one slope, one gait
+    # smoke: one slope, one gait (nor their controls, which match their sizes)
+    assert refused == {"unseen-inclination", "unseen-gait", "control-inclination", "control-gait"}
     for name, counts in info["splits"].items():
         if name in refused:
             continue
