@@ -296,12 +296,9 @@ def symmetry_command(dataset_id: str, output: Path | None, as_json: bool) -> Non
     from rich.markup import escape
 
     from symbench.core.data.dataset import load_dataset
-    from symbench.core.data.symmetry.report import (
-        PLOT_NAME,
-        READING_NAMES,
-        dataset_symmetry,
-        symmetry_png,
-    )
+    from symbench.core.data.symmetry.pairing import READING_NAMES
+    from symbench.core.data.symmetry.plot import PLOT_NAME, symmetry_png
+    from symbench.core.data.symmetry.report import dataset_symmetry
 
     dataset = load_dataset(dataset_id)
     report = dataset_symmetry(dataset)

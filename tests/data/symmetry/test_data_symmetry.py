@@ -15,8 +15,9 @@ import pytest
 from cli_invoke import error_line, invoke
 
 from symbench.core.common.errors import SymbenchError
+from symbench.core.data.symmetry.measure import measure
+from symbench.core.data.symmetry.pairing import find_pairs, rotation_angles
 from symbench.core.data.symmetry.raw_action import act_on_raw
-from symbench.core.data.symmetry.report import find_pairs, measure, rotation_angles
 from symbench.core.data.views.frames import LegFrames
 from symbench.core.robot.specs import load_robot
 

@@ -17,7 +17,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from symbench.core.data.symmetry.report import find_pairs, measure, rotation_angles
+from symbench.core.data.symmetry.measure import measure
+from symbench.core.data.symmetry.pairing import find_pairs, rotation_angles
 from symbench.core.data.views.frames import LegFrames
 from symbench.core.robot.specs import load_robot
 
