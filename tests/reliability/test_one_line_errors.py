@@ -42,7 +42,7 @@ def no_run(monkeypatch):
     [
         (("run", "--model", "sdnn", "--robot", "hexa", "--seed", 2**32), "--seed"),
         (("sweep", "--models", "sdnn", "--robots", "hexa", "--seeds", f"0,{2**32}"), "--seeds"),
-        (("data", "info", "hexa-climb-smoke-v6", "--seed", 2**32), "--seed"),
+        (("data", "info", "hexa-climb-smoke-v7", "--seed", 2**32), "--seed"),
     ],
 )
 def test_a_seed_beyond_2_32_is_a_usage_error(no_run, args, option):

@@ -80,7 +80,7 @@ def test_a_variant_of_no_robot_is_refused_in_one_line(name, unknown):
 
 def test_variant_datasets_have_ids_that_name_the_variant():
     did = dataset_id("hexa-asym-0.05", "small-noisy")
-    assert did == "hexa-asym-0.05-climb-small-noisy-v6"
+    assert did == "hexa-asym-0.05-climb-small-noisy-v7"
     assert parse_dataset_id(did) == ("hexa-asym-0.05", "small-noisy")
 
 

@@ -68,7 +68,7 @@ def test_an_interrupted_generation_resumes_and_keeps_finished_work(home, tmp_pat
 
     with pytest.raises(SymbenchError, match="run the same command again to resume"):
         generate("hexa", "smoke", simulator=interrupted, show_progress=False)
-    root = dataset_dir("hexa-climb-smoke-v6")
+    root = dataset_dir("hexa-climb-smoke-v7")
     assert not (root / "metadata.json").exists()  # not a dataset until it is complete
     kept = {p.name: p.stat().st_mtime_ns for p in (root / "trajectories").iterdir()}
     assert len(kept) == 2
@@ -102,7 +102,7 @@ def test_a_damaged_file_is_detected_and_regenerating_fixes_it(smoke_hexa, damage
     with pytest.raises(SymbenchError) as err:
         load_dataset(smoke_hexa.dataset_id)
     assert str(err.value) == (
-        "dataset 'hexa-climb-smoke-v6': trajectories/00002.parquet changed, truncated or "
+        "dataset 'hexa-climb-smoke-v7': trajectories/00002.parquet changed, truncated or "
         "missing (SHA-256 mismatch); fix it with: symbench data generate --robot hexa "
         "--preset smoke"
     )
@@ -121,7 +121,7 @@ def test_edited_metadata_and_missing_datasets_are_reported(smoke_hexa):
         load_dataset(smoke_hexa.dataset_id)
     shutil.rmtree(smoke_hexa.root)
     with pytest.raises(SymbenchError, match="symbench data generate --robot hexa --preset smoke"):
-        load_dataset("hexa-climb-smoke-v6")
+        load_dataset("hexa-climb-smoke-v7")
 
 
 def test_a_stale_record_is_simulated_again(smoke_hexa):
@@ -155,7 +155,7 @@ def test_ensure_dataset_generates_only_when_missing(home, monkeypatch):
         lambda: lambda s, record_period: calls.append(s) or fake_simulate(s, record_period),
     )
     ds = generation.ensure_dataset("hexa", "smoke", workers=1, show_progress=False)
-    assert len(calls) == 6 and ds.id == "hexa-climb-smoke-v6"
+    assert len(calls) == 6 and ds.id == "hexa-climb-smoke-v7"
     assert generation.ensure_dataset("hexa", "smoke", workers=1).content_hash == ds.content_hash
     assert len(calls) == 6
 

@@ -88,10 +88,10 @@ def test_the_noise_is_a_stored_scenario_field():
 
 def test_the_noisy_preset_is_smalls_grid_with_noise_under_its_own_id():
     did = dataset_id("hexa", "small-noisy")
-    assert did == "hexa-climb-small-noisy-v6"
+    assert did == "hexa-climb-small-noisy-v7"
     assert parse_dataset_id(did) == ("hexa", "small-noisy") and is_standard(did)
-    assert parse_dataset_id("hexa-climb-small-v6") == ("hexa", "small")
-    assert parse_dataset_id("hexa-climb-large-noisy-v6") is None
+    assert parse_dataset_id("hexa-climb-small-v7") == ("hexa", "small")
+    assert parse_dataset_id("hexa-climb-large-noisy-v7") is None
     small, noisy = PRESETS["small"], PRESETS["small-noisy"]
     assert noisy.dataset == dataclasses.replace(small.dataset, torque_noise=0.5)
     clean = small.scenarios("hexa", 6, 6)
@@ -111,7 +111,7 @@ def test_the_noisy_smoke_dataset_is_the_same_on_every_machine(tmp_path, monkeypa
 
     monkeypatch.setenv("SYMBENCH_HOME", str(tmp_path))
     report = generate("hexa", "smoke-noisy", workers=1, show_progress=False)
-    assert report.dataset_id == "hexa-climb-smoke-noisy-v6" and report.n_failed == 0
+    assert report.dataset_id == "hexa-climb-smoke-noisy-v7" and report.n_failed == 0
     if library_versions() != LIBRARY_VERSIONS:
         pytest.skip("the installed libraries are not the pinned ones")
     assert report.content_hash == reference_hash(report.dataset_id, LIBRARY_VERSIONS)
@@ -123,8 +123,8 @@ def test_the_noisy_smoke_dataset_is_the_same_on_every_machine(tmp_path, monkeypa
 @pytest.mark.parametrize(
     ("did", "trained_on"),
     [
-        ("hexa-climb-smoke-v6", "hexa-climb-smoke-noisy-v6"),  # standard: its noisy variant
-        ("hexa-climb-smoke-noisy-v6", "hexa-climb-smoke-noisy-v6"),  # itself
+        ("hexa-climb-smoke-v7", "hexa-climb-smoke-noisy-v7"),  # standard: its noisy variant
+        ("hexa-climb-smoke-noisy-v7", "hexa-climb-smoke-noisy-v7"),  # itself
         ("my-hexa-logs", "my-hexa-logs"),  # imported: no noisy variant, its own data
     ],
 )

@@ -129,15 +129,15 @@ def test_cli_on_a_generated_dataset_and_on_a_heavier_leg(smoke_home, tmp_path):
     from symbench.core.data import load_dataset
     from symbench.core.data.importing.importer import export_dataset, import_logs
 
-    result = invoke("data", "symmetry", "hexa-climb-smoke-v6", "--json", "--output", tmp_path)
+    result = invoke("data", "symmetry", "hexa-climb-smoke-v7", "--json", "--output", tmp_path)
     assert result.exit_code == 0, result.output
     report = json.loads(result.stdout)
     assert report["image_pairs"] == 2 and report["floor"] == "high-frequency"
     for row in report["groups"].values():
         assert row["relative_error"] < 1e-6, row
-    assert (tmp_path / "symmetry-hexa-climb-smoke-v6.png").stat().st_size > 0
+    assert (tmp_path / "symmetry-hexa-climb-smoke-v7.png").stat().st_size > 0
 
-    folder = export_dataset(load_dataset("hexa-climb-smoke-v6"), tmp_path / "logs", "npz")
+    folder = export_dataset(load_dataset("hexa-climb-smoke-v7"), tmp_path / "logs", "npz")
     for path in folder.glob("*.npz"):
         with np.load(path) as npz:
             arrays = dict(npz)

@@ -109,15 +109,15 @@ def test_directions_turn_and_leg_orders_relabel_with_the_base():
 
 
 def test_generated_scenarios_pair_as_the_simulator_builds_its_twins():
-    """A generated dataset stores the simulator's input (direction and leg order of the
+    """A generated grid (v6's transfer) stores the simulator's input (direction and leg order of the
     yaw's first sector): its images are the scenarios equal but for the yaw, as before."""
-    from symbench.core.config.presets import PRESETS
+    from symbench.core.config.presets import preset
 
     spec = load_robot("magneto")
     frames = LegFrames.from_spec(spec)
     scenarios = [
         s.to_dict()
-        for s in PRESETS["transfer"].scenarios("magneto", spec.n_legs, spec.group.rotation_order)
+        for s in preset("transfer@v6").scenarios("magneto", spec.n_legs, spec.group.rotation_order)
         if s.inclination_deg == 90.0
     ]
     images, _ = find_pairs(scenarios, range(len(scenarios)), spec.group, frames, "simulator", spec)

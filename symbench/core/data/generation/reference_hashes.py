@@ -65,6 +65,28 @@ CONTENT_HASHES = {
     "nona-climb-small-noisy-v6": (
         "05e0441726aa0f861e80dba612f84f76c704592e1e2fa695fc5133a52ff8424f"
     ),
+    # dataset v7: climbs drawn from continuous distributions, each step its own
+    "magneto-climb-smoke-v7": ("75465e28ba671957ff5ad18c8b8a0f5af234d2a3d4a9bb2de198acff79e51e80"),
+    "hexa-climb-smoke-v7": ("8cb818d40a2b53701e40a600d17c32b77325c470234ed4a9ae3cd9e2f53e92af"),
+    "nona-climb-smoke-v7": ("5a588c4b6ce8403132e4fc3d2c5f21b797970e3f79e30ddc4fa70dac1cba5f28"),
+    "magneto-climb-small-v7": ("141b589a76a399be978bbc8140737a40d8bfe7577c32fa66ed8e33b54154d82a"),
+    "hexa-climb-small-v7": ("a6d97a7bd9e3aa5de3fe7811adeff27c554ab20d196d0d595d4e1767ac5852d7"),
+    "nona-climb-small-v7": ("96a98437f37c743a77eb826818ab9e72f4181c6166f005c296f478ec341c6c5c"),
+    "magneto-climb-smoke-noisy-v7": (
+        "8436c48d895eb9b99830c147bc4d5b428385375f6fd3a301a5d6afab99bfb517"
+    ),
+    "hexa-climb-smoke-noisy-v7": (
+        "3328cd9b49531e9473e6e31837f3b568fce88ca5ab5eed1c099fe8c379b095ed"
+    ),
+    "nona-climb-smoke-noisy-v7": (
+        "b4b617db5befa644ed653e4c18adec203e3374dc23a1be5f658722a38e653abe"
+    ),
+    "magneto-climb-small-noisy-v7": (
+        "ed60f097399d1686d08b42a9a6cbaa0eef6f747334771ca5ce007673d7d7fd91"
+    ),
+    "hexa-climb-small-noisy-v7": (
+        "e69c4fb6a66edc411598c879a85aed6e5407df2022a8b4cc5e73e8dfa95ab7d4"
+    ),
 }
 
 
