@@ -13,7 +13,7 @@ Building models
 Writing evaluators
     EvaluationContext, TrainedOnSplit, rmse, relative_error, act_on_raw,
     rotate_scene_about_gravity, rotate_scene, Scenario, simulate, track, track_batch,
-    TrackJob, feedforward_policy, build_view,
+    TrackJob, feedforward_policy, build_view, ClosedLoopSetup,
     sample_efficiency_png, held_out_scenarios, reference_scenarios, oracle_policy, model_jobs,
     dataset_symmetry
 Writing splits
@@ -75,6 +75,7 @@ _PUBLIC: dict[str, str] = {
     "reference_scenarios": "symbench.core.sim.tracking.references:reference_scenarios",
     "oracle_policy": "symbench.core.sim.tracking.references:oracle_policy",
     "model_jobs": "symbench.core.sim.tracking.references:model_jobs",
+    "ClosedLoopSetup": "symbench.core.runs.closed_loop:ClosedLoopSetup",
     "build_view": "symbench.core.data.views.transforms:build_view",
     "dataset_symmetry": "symbench.core.data.symmetry.report:dataset_symmetry",
     "sample_efficiency_png": "symbench.core.board.plots:sample_efficiency_png",
@@ -95,6 +96,7 @@ __all__ = [
     "PRESETS",
     "VARIANTS",
     "VIEWS",
+    "ClosedLoopSetup",
     "EvaluationContext",
     "EvaluatorEntry",
     "InvalidEntryError",
@@ -185,6 +187,7 @@ if TYPE_CHECKING:  # what type checkers and editors see
     )
     from symbench.core.plugin.registry import model as model_entry
     from symbench.core.robot.specs import load_robot
+    from symbench.core.runs.closed_loop import ClosedLoopSetup
     from symbench.core.runs.control_policy import feedforward_policy
     from symbench.core.runs.evaluation import (
         EvaluationContext,
