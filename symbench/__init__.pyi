@@ -60,6 +60,7 @@ from .core.sim.tracking.learned_control import (
     TrackJob as TrackJob,
 )
 from .core.runs.control_policy import feedforward_policy as feedforward_policy
+from .core.runs.closed_loop import ClosedLoopSetup as ClosedLoopSetup
 from .core.data.views.transforms import build_view as build_view
 from .core.board.plots import sample_efficiency_png as sample_efficiency_png
 from .core.sim.tracking.references import (

@@ -159,35 +159,16 @@ def _build(folder: Path, site: Path) -> subprocess.CompletedProcess:
 def test_the_clip_model_is_the_records(trained):
     """Loaded from its checkpoint, the closed loop's model tracks the evaluator's references
     exactly as it did in the run."""
-    from symbench.core.board.site.clips import checkpoint_folder, closed_loop_model
-    from symbench.core.config.presets import preset
+    from symbench.core.board.site.clips import closed_loop_model, closed_loop_setup
     from symbench.core.data.dataset import load_dataset
-    from symbench.core.runs.control_policy import feedforward_policy
-    from symbench.core.sim.scene.scenario import Scenario
-    from symbench.core.sim.tracking.learned_control import expert_reference, track_batch
-    from symbench.core.sim.tracking.references import model_jobs, reference_scenarios
 
-    budget = preset("smoke").closed_loop
-    fractions = [float(f) for f in budget.pd_fractions]
     for path, record in load_records(trained / "results"):
         metrics = record.metrics["closed-loop"]
         dataset = load_dataset(record.dataset.id)
-        model = closed_loop_model(checkpoint_folder(path, record, trained / "results"), record)
-        policy = feedforward_policy(model.predict, dataset.frames, model.entry.view)
-        control = dataset.spec.control
-        test = dataset.split_indices("iid", 0).test
-        rotation = dataset.spec.group.rotation_order
-        references = []
-        for fields in reference_scenarios(
-            dataset, test, budget.references, budget.seconds, rotation
-        ):
-            scenario = Scenario.from_dict(fields)
-            reference = expert_reference(scenario)
-            if reference.attached:
-                references.append((scenario, reference.arrays))
-        jobs = model_jobs(references, fractions, (control.kp, control.kd))
-        results = track_batch(jobs, policy)
-        at_headline = results[fractions.index(budget.headline_pd) :: len(fractions)]
+        model = closed_loop_model(path, record, trained / "results").load()
+        setup = closed_loop_setup(record, dataset)
+        results = setup.track_model(model.predict, model.entry.view, setup.references)
+        at_headline = [results[setup.job(i, setup.headline)] for i in range(len(setup.references))]
         held = [r.time_to_failure_s for r in at_headline]
         rmse = [r.joint_rmse_rad for r in at_headline]
         assert float(np.mean(held)) == pytest.approx(metrics["pd_time_to_failure_s"], rel=1e-12)

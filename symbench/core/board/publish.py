@@ -5,8 +5,8 @@ pass `RecordChecks` (sealed, committed tree, accepted preset, registered names, 
 dataset's hash); each run group (dataset, split, model, variant, backend) needs MIN_SEEDS
 seeds; `verify` re-runs a seeded sample of the incoming records first. Only then is the new
 board built in a staging folder beside it (records, named by their key `run_key`, and
-tables) and swapped in by two renames, so a refusal, or a failure half-way, leaves the
-board exactly as it was.
+tables) and swapped in by renames (`replace_folder`), so a refusal, or a failure half-way,
+leaves the board exactly as it was.
 
 The CLI accepts the `small` and `paper` presets only. The Python API takes the accepted
 presets as a parameter so that tests can publish records of the seconds-long `smoke` preset;
@@ -15,7 +15,6 @@ those records still pass every other check, on a real smoke dataset.
 
 from __future__ import annotations
 
-import os
 import shutil
 import tempfile
 from collections import defaultdict
@@ -24,6 +23,7 @@ from pathlib import Path
 
 from symbench.core.board.leaderboard import MIN_SEEDS, write_leaderboard
 from symbench.core.board.publish_checks import RecordChecks
+from symbench.core.common.atomic import replace_folder, staging_folder
 from symbench.core.common.errors import SymbenchError
 from symbench.core.runs.results import ResultRecord, write_record
 
@@ -81,19 +81,16 @@ def swap_in(board: Path, build: Callable[[Path], list[Path]]) -> list[Path]:
     """Build a copy of `board` in a staging folder beside it, then put the copy in its place;
     returns the files `build` wrote, as paths in the board."""
     board = Path(board)
-    board.parent.mkdir(parents=True, exist_ok=True)
-    staging = Path(tempfile.mkdtemp(prefix=f".{board.name}.staging-", dir=board.parent))
+    staging = staging_folder(board)
     try:
-        staged = staging / board.name
         if board.exists():
-            shutil.copytree(board, staged, symlinks=True)
-        written = [board / p.relative_to(staged) for p in build(staged)]
-        if board.exists():
-            os.rename(board, staging / "previous")
-        os.rename(staged, board)
+            shutil.copytree(board, staging, symlinks=True, dirs_exist_ok=True)
+        written = [board / p.relative_to(staging) for p in build(staging)]
+        replace_folder(staging, board)
         return written
-    finally:
+    except BaseException:
         shutil.rmtree(staging, ignore_errors=True)
+        raise
 
 
 def publish(

@@ -25,6 +25,9 @@ Protocol (`symbench presets` shows its numbers, the preset's `closed_loop` group
   reference). `normalized_score` places the model between floor (0) and oracle (1) on the
   time held, so models compare across robots; `normalized_rmse_score` does the same with
   the joint tracking RMSE (the score at fractions where all three hold the horizon).
+- One implementation: `symbench.ClosedLoopSetup` owns the references, gains, calibration
+  (with its cache) and the model's rollouts; the site's clips run the same; this plugin
+  turns its rows into metrics.
 - Cost: only the model rows depend on the model. References, expert success, oracle (one
   replay, at the headline fraction: it is the same at every fraction) and floor are kept
   under the output folder (`closed-loop-cache/<key>/`, keyed by dataset content, robot,
@@ -48,17 +51,12 @@ fall within about a second, which measures little but the model's bias.
 
 from __future__ import annotations
 
-import hashlib
-import json
 import math
-import os
-import tempfile
 from pathlib import Path
-from types import SimpleNamespace
 
 import numpy as np
 
-from symbench import EvaluationContext, reference_scenarios
+from symbench import ClosedLoopSetup, EvaluationContext
 from symbench import held_out_scenarios as held_out_scenarios  # kept importable from here
 
 NAME = "closed-loop"
@@ -68,6 +66,7 @@ DESCRIPTION = (
     "expert rows calibrate it"
 )
 ROWS = ("model", "oracle", "floor")
+CACHE_DIR = "closed-loop-cache"  # under the run's output folder
 
 
 def trainings(context: EvaluationContext) -> list[tuple[str | None, str, str]]:
@@ -77,39 +76,27 @@ def trainings(context: EvaluationContext) -> list[tuple[str | None, str, str]]:
 
 
 def evaluate(context: EvaluationContext) -> dict:
-    from symbench import feedforward_policy, model_jobs, track_batch
-
     trained_on = context.control_dataset()  # the noisy variant of a standard dataset
     trained = context.on_dataset(trained_on, context.split, "next")
-    policy = feedforward_policy(trained.predict, context.dataset.frames, context.entry.view)
-    budget = context.preset.closed_loop
-    control = context.robot.control
-    fractions = tuple(float(f) for f in budget.pd_fractions)
-    scenarios = reference_scenarios(
-        context.dataset,
-        context.test_trajectories,
-        budget.references,
-        budget.seconds,
-        context.robot.group.rotation_order,
-    )
-    measured = _calibration(context, scenarios, fractions, float(budget.headline_pd))
+    setup = ClosedLoopSetup(context.dataset, context.test_trajectories, context.preset.closed_loop)
+    fractions = setup.fractions
     # None: the expert itself fell, no reference to track
-    kept = [(f, m) for f, m in zip(scenarios, measured, strict=True) if m is not None]
+    measured = setup.calibration(Path(context.output_dir) / CACHE_DIR)
+    kept = [(f, m) for f, m in zip(setup.scenarios, measured, strict=True) if m is not None]
     calibration = [m for _, m in kept]
     # every reference at every fraction in lockstep: one model call per physics step
-    references = [(scenario, ref) for scenario, ref, _, _ in calibration]
-    jobs = model_jobs(references, fractions, (control.kp, control.kd))
-    tracked = iter(track_batch(jobs, policy))
+    references = [(m.scenario, m.reference) for m in calibration]
+    tracked = iter(setup.track_model(trained.predict, context.entry.view, references))
     runs: dict[str, dict[float, list]] = {row: {f: [] for f in fractions} for row in ROWS}
-    for _, _, oracle, floor in calibration:
-        for f in fractions:  # the order of model_jobs
+    for m in calibration:
+        for f in fractions:  # the order of the batch (`ClosedLoopSetup.job`)
             runs["model"][f].append(next(tracked))
-            runs["oracle"][f].append(oracle)
-            runs["floor"][f].append(floor[f])
-    tried = len(scenarios)
+            runs["oracle"][f].append(m.oracle)
+            runs["floor"][f].append(m.floor[f])
+    tried = len(setup.scenarios)
     horizons = [float(fields["seconds"]) for fields, _ in kept]
     orbits = [_describe(fields) for fields, _ in kept]
-    headline = float(budget.headline_pd)
+    headline = setup.headline
     out: dict = {
         "trained_on": trained_on,
         "references": len(horizons),
@@ -117,7 +104,7 @@ def evaluate(context: EvaluationContext) -> dict:
         "horizon_s": _mean(horizons),
         "pd_fractions": list(fractions),
         "headline_pd_fraction": headline,
-        "pd_gains": [headline * control.kp, headline * control.kd],
+        "pd_gains": list(setup.gains(headline)),
         "expert_success_rate": len(horizons) / tried if tried else None,
     }
     by_fraction: dict[str, dict] = {}
@@ -137,121 +124,6 @@ def evaluate(context: EvaluationContext) -> dict:
         for row in ("oracle", "floor"):
             out.update({f"{prefix}{row}_{k}": v for k, v in part[row].items() if k != "failures"})
     return out
-
-
-CACHE_DIR = "closed-loop-cache"  # under the run's output folder
-CACHE_VERSION = 1  # bump when what is cached, or how it is measured, changes
-
-
-def _calibration(
-    context: EvaluationContext,
-    scenarios: list[dict],
-    fractions: tuple[float, ...],
-    oracle_pd: float,
-) -> list:
-    """Per reference scenario: None when the expert fell, else (scenario, reference, oracle,
-    floor by fraction). None of it depends on the model, so it is measured once per
-    (dataset content, robot, references, fractions) and kept under the output folder: a
-    sweep pays it once. The oracle runs once, at `oracle_pd`: on the reference the PD and
-    the residual vanish, so the applied torque is the recorded one at every fraction (the
-    tests pin the replay at each)."""
-    from symbench import Scenario, __version__, oracle_policy, simulate
-
-    control = context.robot.control
-    key = {
-        "cache_version": CACHE_VERSION,
-        "symbench": __version__,
-        "dataset_content_hash": context.dataset.content_hash,
-        "robot_spec_hash": context.robot.spec_hash(),
-        "scenarios": scenarios,
-        "pd_fractions": list(fractions),
-        "oracle_pd_fraction": oracle_pd,
-        "servo_gains": [control.kp, control.kd],
-    }
-    text = json.dumps(key, sort_keys=True, separators=(",", ":"))
-    folder = Path(context.output_dir) / CACHE_DIR / hashlib.sha256(text.encode()).hexdigest()[:20]
-    cached = _read_calibration(folder, key, fractions)
-    if cached is not None:
-        return cached
-    from symbench import track
-
-    out: list = []
-    for fields in scenarios:
-        scenario = Scenario.from_dict(fields)
-        # the expert's climb recorded at every physics step: what `track` needs
-        reference = simulate(scenario, record_period=control.timestep)
-        if not reference.attached:
-            out.append(None)
-            continue
-        ref = reference.arrays
-
-        def floor(rows: dict[str, np.ndarray], ref=ref) -> np.ndarray:
-            return np.zeros_like(ref["tau"][0])
-
-        def gains(f: float) -> tuple[float, float]:
-            return f * control.kp, f * control.kd
-
-        replay = track(scenario, ref, oracle_policy(ref), gains(oracle_pd))
-        floors = {f: track(scenario, ref, floor, gains(f)) for f in fractions}
-        out.append((scenario, ref, replay, floors))
-    _write_calibration(folder, key, out)
-    return out
-
-
-def _write_atomic(path: Path, write) -> None:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "wb") as handle:
-            write(handle)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-
-
-def _write_calibration(folder: Path, key: dict, measured: list) -> None:
-    """References as .npz (exact float64), then calibration.json last: its presence means
-    the folder is complete."""
-    rows: list = []
-    for i, item in enumerate(measured):
-        if item is None:
-            rows.append(None)
-            continue
-        _, ref, oracle, floors = item
-        _write_atomic(folder / f"reference-{i}.npz", lambda h, ref=ref: np.savez(h, **ref))
-        rows.append(
-            {
-                "oracle": dict(vars(oracle)),
-                "floor": [[f, dict(vars(r))] for f, r in floors.items()],
-            }
-        )
-    body = json.dumps({"key": key, "references": rows}, indent=1).encode()
-    _write_atomic(folder / "calibration.json", lambda h: h.write(body))
-
-
-def _read_calibration(folder: Path, key: dict, fractions: tuple[float, ...]) -> list | None:
-    """The cached calibration when it is complete and of this very key, else None."""
-    from symbench import Scenario
-
-    try:
-        data = json.loads((folder / "calibration.json").read_text())
-        if data["key"] != json.loads(json.dumps(key)):
-            return None
-        out: list = []
-        for i, (fields, row) in enumerate(zip(key["scenarios"], data["references"], strict=True)):
-            if row is None:
-                out.append(None)
-                continue
-            with np.load(folder / f"reference-{i}.npz", allow_pickle=False) as npz:
-                ref = {k: npz[k] for k in npz.files}
-            floors = {float(f): SimpleNamespace(**r) for f, r in row["floor"]}
-            if tuple(floors) != fractions:
-                return None
-            out.append((Scenario.from_dict(fields), ref, SimpleNamespace(**row["oracle"]), floors))
-        return out
-    except (OSError, ValueError, KeyError, TypeError):
-        return None
 
 
 def _describe(fields: dict) -> str:

@@ -8,12 +8,13 @@ and the worst model of the dataset climbing beside the expert, so the difference
   table's order. The group's seed-0 record is shown (its lowest seed, when it has no 0).
 - Which model file: the closed loop's own, the run's architecture trained on the `next`
   variant of `trained_on`, loaded from the checkpoint the run left under its results folder
-  (`checkpoints/<run key>/<dataset hash>/[<trained_on>-<hash>/]iid__next/best`): nothing is
+  (asked for by run key: `symbench.core.runs.trained_models.trained_model`): nothing is
   retrained, and a missing checkpoint is an error naming it.
-- Which climb: the first reference the evaluator tracked (`reference_scenarios`, the first
-  the expert holds), at the preset's headline PD fraction. The expert's side is the
-  expert's recorded torques replayed with the same gains (`oracle_policy`: its climb again,
-  to rounding), since a recorded reference lacks the passive ankle joints a pose needs.
+- Which climb: the first reference the evaluator tracked (`ClosedLoopSetup`, the evaluator's
+  own: the first reference the expert holds), at the preset's headline PD fraction, the
+  model in the evaluator's whole batch. The expert's side is the closed loop's oracle (the
+  expert's recorded torques replayed with the same gains: its climb again, to rounding),
+  since a recorded reference lacks the passive ankle joints a pose needs.
 
 Each clip is rendered by symbench.core.sim.tracking.render (both sides from one fixed camera on the
 reference's path, so a model that strays is seen straying; a failed climb holds its last
@@ -23,11 +24,10 @@ state) and written as `clips/<robot>__<dataset>-<best|worst>-<model>.webp`.
 from __future__ import annotations
 
 import json
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
-import numpy as np
 import pandas as pd
 from PIL import Image
 
@@ -38,17 +38,10 @@ from symbench.core.board.site.pages import CLOSED_LOOP, group_of, row_key
 from symbench.core.common.atomic import write_bytes_atomic
 from symbench.core.common.errors import SymbenchError
 from symbench.core.config.presets import preset
-from symbench.core.runs.control_policy import feedforward_policy
+from symbench.core.runs.closed_loop import ClosedLoopSetup, Reference
 from symbench.core.runs.results import RecordV1
-from symbench.core.runs.spec import checkpoint_root
-from symbench.core.sim.scene.scenario import Scenario
-from symbench.core.sim.tracking.learned_control import (
-    Tracking,
-    expert_reference,
-    track,
-    track_batch,
-)
-from symbench.core.sim.tracking.references import model_jobs, oracle_policy, reference_scenarios
+from symbench.core.runs.trained_models import StoredModel, TrainedModelNotFound, trained_model
+from symbench.core.sim.tracking.learned_control import Tracking
 from symbench.core.sim.tracking.render import (
     Camera,
     ClimbRenderer,
@@ -61,7 +54,6 @@ from symbench.core.sim.tracking.render import (
 
 if TYPE_CHECKING:
     from symbench.core.data.dataset import Dataset
-    from symbench.core.training.trained_model import TrainedModel
 
 SPLIT = "iid"
 SCORE = COLUMNS[(CLOSED_LOOP, "pd_normalized_score")]
@@ -108,76 +100,60 @@ def choose(rows: pd.DataFrame, records: list[tuple[Path, RecordV1]]) -> list[Cho
     return [Choice(role, row_key(row), *shown[row_key(row)], by) for role, row in ends]
 
 
-def checkpoint_folder(path: Path, record: RecordV1, results: Path) -> Path:
+def closed_loop_model(path: Path, record: RecordV1, results: Path) -> StoredModel:
     """The closed loop's model of `record` (at `path`) under `results`, as the run left it;
     an error naming what is missing otherwise."""
-    from symbench.core.training.resume import BEST_DIR
-    from symbench.core.training.trained_model import TENSORS
-
     trained_on = record.metrics[CLOSED_LOOP]["trained_on"]
-    run = checkpoint_root(results, record.key(), record.dataset.content_hash)
-    # retrained on another dataset (the noisy one) it lies in that dataset's folder
-    on = f"{trained_on}-*/" if trained_on != record.dataset.id else ""
-    pattern = f"{on}{SPLIT}__next"
-    found = sorted(f / BEST_DIR for f in run.glob(pattern) if (f / BEST_DIR / TENSORS).is_file())
-    if not found:
+    try:
+        return trained_model(results, record, SPLIT, "next", trained_on)
+    except TrainedModelNotFound as missing:
+        if missing.found:
+            raise SymbenchError(
+                f"several closed-loop checkpoints for {path} "
+                f"({', '.join(map(str, missing.found))}): remove the stale ones"
+            ) from None
         raise SymbenchError(
             f"no closed-loop checkpoint for the clip of {path}: nothing at "
-            f"{run / pattern / BEST_DIR}; give --clips-from the results folder of its run"
-        )
-    if len(found) > 1:
-        raise SymbenchError(
-            f"several closed-loop checkpoints for {path} ({', '.join(map(str, found))}): "
-            "remove the stale ones"
-        )
-    return found[0]
+            f"{missing.where}; give --clips-from the results folder of its run"
+        ) from None
 
 
-# per (robot, dataset): each clip's choice with its checkpoint
-ClipPlan = dict[tuple[str, str], tuple[tuple[Choice, Path], ...]]
+# per (robot, dataset): each clip's choice with its model
+ClipPlan = dict[tuple[str, str], tuple[tuple[Choice, StoredModel], ...]]
 
 
 def clip_plan(table: pd.DataFrame, records: list[tuple[Path, RecordV1]], results: Path) -> ClipPlan:
     """Per (robot, dataset) of the aggregate `table`: the clips' choices, each with its
-    checkpoint under `results`, all found before anything is rendered or written."""
+    model under `results`, all found before anything is rendered or written."""
     return {
         (str(robot), str(did)): tuple(
-            (c, checkpoint_folder(c.path, c.record, results)) for c in choose(rows, records)
+            (c, closed_loop_model(c.path, c.record, results)) for c in choose(rows, records)
         )
         for (robot, did), rows in table.groupby(["robot", "dataset"], sort=True)
     }
 
 
-def closed_loop_model(checkpoint: Path, record: RecordV1) -> TrainedModel:
-    """The trained model the closed-loop evaluator of `record` tracked with, loaded from its
-    finished `checkpoint`: never retrained."""
-    from symbench.core.plugin import registry
-    from symbench.core.training.trained_model import TrainedModel
-
-    entry = replace(registry.model(record.model.name, record.model.backend), variant="next")
-    model = TrainedModel.load(checkpoint, entry)
-    if not model.stopped:
-        raise SymbenchError(f"{checkpoint} is not a finished training; run {record.key()} again")
-    return model
+def closed_loop_setup(record: RecordV1, dataset: Dataset) -> ClosedLoopSetup:
+    """The closed loop the evaluator of `record` ran: its split's test climbs, its preset."""
+    test = dataset.split_indices(record.split, record.seed).test
+    return ClosedLoopSetup(dataset, test, preset(record.dataset.preset).closed_loop)
 
 
 @dataclass
 class Scene:
     """A reference climb with the expert's side of its clip, shared by the page's models."""
 
-    scenario: Scenario  # the clip's: the first reference
-    reference: dict[str, np.ndarray]  # the expert's climb at every physics step
-    references: list[tuple[Scenario, dict[str, np.ndarray]]]  # all the evaluator tracked
+    references: list[Reference]  # all the evaluator tracked; the clip's is the first
     renderer: ClimbRenderer
     camera: Camera  # the clip's, fixed on the expert's path
     expert: list[Image.Image]  # the expert's labelled frames
 
 
-def draw_clips(planned: tuple[tuple[Choice, Path], ...], site: Path) -> tuple[Clip, ...]:
+def draw_clips(planned: tuple[tuple[Choice, StoredModel], ...], site: Path) -> tuple[Clip, ...]:
     """The clips of one board page (its part of `clip_plan`), written under `site`."""
     if not planned:
         return ()
-    models = [closed_loop_model(checkpoint, c.record) for c, checkpoint in planned]
+    models = [stored.load() for _, stored in planned]
     dataset = _dataset(planned[0][0].record)  # the page's: one dataset
     scenes: dict[str, Scene] = {}
     try:
@@ -190,22 +166,21 @@ def draw_clips(planned: tuple[tuple[Choice, Path], ...], site: Path) -> tuple[Cl
 
 
 def _clip(
-    choice: Choice, model: TrainedModel, dataset: Dataset, site: Path, scenes: dict[str, Scene]
+    choice: Choice, model: Any, dataset: Dataset, site: Path, scenes: dict[str, Scene]
 ) -> Clip:
+    """The clip of `choice`, whose closed loop tracked with `model` (a loaded `StoredModel`)."""
     record = choice.record
-    headline = float(preset(record.dataset.preset).closed_loop.headline_pd)
-    control = dataset.spec.control
-    gains = (headline * control.kp, headline * control.kd)
-    scene = _scene(record, dataset, gains, scenes)
+    setup = closed_loop_setup(record, dataset)
+    headline = setup.headline
+    scene = _scene(record, setup, scenes)
     learned = Recording()
-    policy = feedforward_policy(model.predict, dataset.frames, model.entry.view)
-    # the evaluator's whole batch (see model_jobs), the clip's job observed
-    fractions = [float(f) for f in preset(record.dataset.preset).closed_loop.pd_fractions]
-    jobs = model_jobs(scene.references, fractions, (control.kp, control.kd))
-    shown = fractions.index(headline)  # the first reference at the headline fraction
-    jobs[shown] = replace(jobs[shown], observe=learned)
-    result = track_batch(jobs, policy)[shown]
-    times = frame_times(scene.scenario.seconds)
+    # the evaluator's whole batch, the clip's job (the first reference at the headline
+    # fraction) observed
+    shown = setup.job(0, headline)
+    tracked = setup.track_model(model.predict, model.entry.view, scene.references, {shown: learned})
+    result = tracked[shown]
+    scenario = scene.references[0][0]
+    times = frame_times(scenario.seconds)
     poses = learned.at(times, scene.renderer.initial)
     fell = f"failed at {result.time_to_failure_s:.2f} s"
     title = f"{record.model.name} (PD {headline:g})"
@@ -221,40 +196,30 @@ def _clip(
         f"{choice.role.capitalize()} by {choice.ranked_by}: {record.model.name}",
         path,
         names.entry_page(choice.key),
-        _caption(choice, result, scene.scenario.seconds, headline),
+        _caption(choice, result, scenario.seconds, headline),
     )
 
 
-def _scene(
-    record: RecordV1, dataset: Dataset, gains: tuple[float, float], scenes: dict[str, Scene]
-) -> Scene:
+def _scene(record: RecordV1, setup: ClosedLoopSetup, scenes: dict[str, Scene]) -> Scene:
     """The reference climbs of `record`'s closed loop, with the expert's frames of the
     first; made once per references and gains."""
-    budget = preset(record.dataset.preset).closed_loop
-    test = dataset.split_indices(record.split, record.seed).test
-    rotation = dataset.spec.group.rotation_order
-    fields = reference_scenarios(dataset, test, budget.references, budget.seconds, rotation)
-    key = json.dumps([fields, gains], sort_keys=True)
+    key = json.dumps([setup.scenarios, setup.gains(setup.headline)], sort_keys=True)
     if key in scenes:
         return scenes[key]
-    references = []
-    for scenario in map(Scenario.from_dict, fields):
-        reference = expert_reference(scenario)
-        if reference.attached:  # the evaluator skips the others too
-            references.append((scenario, reference.arrays))
+    references = setup.references  # the evaluator skips those the expert fell on too
     if not references:
         raise SymbenchError(
             f"no clip for {record.key()}: the expert fell on every closed-loop reference"
         )
     scenario, arrays = references[0]
     expert = Recording()
-    track(scenario, arrays, oracle_policy(arrays), gains, observe=expert)
+    setup.oracle(scenario, arrays, observe=expert)
     renderer = ClimbRenderer(scenario)
     camera = renderer.camera(arrays["base_pos"])
     times = frame_times(scenario.seconds)
     frames = renderer.frames(expert.at(times, renderer.initial), camera)
     labels = [labelled(f, "expert", f"t = {t:.2f} s") for f, t in zip(frames, times)]
-    scenes[key] = Scene(scenario, arrays, references, renderer, camera, labels)
+    scenes[key] = Scene(references, renderer, camera, labels)
     return scenes[key]
 
 

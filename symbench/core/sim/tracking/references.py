@@ -1,8 +1,8 @@
 """The climbs the closed loop tracks, and the expert's own torques replayed on them.
 
-One implementation for everyone who must track what the closed-loop evaluator tracked: the
-evaluator itself (symbench/plugins/evaluators/closed_loop.py) and the leaderboard site's
-clips (symbench/core/board/site/clips.py), both through the public API.
+The pieces of the closed loop (`symbench.core.runs.closed_loop.ClosedLoopSetup`, which the
+closed-loop evaluator and the leaderboard site's clips both run), public for evaluators of
+their own.
 """
 
 from __future__ import annotations

@@ -1,0 +1,251 @@
+"""The closed loop of one split: a trained model as the climbing robot's feedforward
+controller, tracking the expert's held-out climbs with a joint PD about them.
+
+`ClosedLoopSetup` is the one implementation of it, for everyone who must track what the
+closed-loop evaluator tracked: the evaluator itself (symbench/plugins/evaluators/
+closed_loop.py, through the public API as `symbench.ClosedLoopSetup`) and the leaderboard
+site's clips (symbench/core/board/site/clips.py). It owns
+
+- the references: the scenario fields of up to `references` held-out test climbs from
+  distinct symmetry orbits (`reference_scenarios`), and the expert's climb of each recorded
+  at every physics step (None where the expert itself fell);
+- the PD gains: fractions of the robot's servo gains (Kp, Kd), the preset's `pd_fractions`
+  and its headline one;
+- the calibration, which does not depend on the model: the `oracle` (the expert's recorded
+  torques replayed, at the headline fraction: on the reference the PD vanishes, so it is
+  the same at every fraction) and the `floor` (zero feedforward: the PD alone) at every
+  fraction, kept in a cache folder when one is given, so a sweep measures it once;
+- the model's rollouts: its policy (`feedforward_policy`) and the jobs of one batch
+  (`model_jobs`: every reference at every fraction, fractions inner), run in lockstep by
+  `track_batch`. A model's torques may round differently in another batch, so whoever
+  reproduces one of these rollouts runs this very batch (`track_model`).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import io
+import json
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, replace
+from functools import cached_property
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from symbench.core.common.atomic import write_bytes_atomic
+from symbench.core.common.version import __version__
+from symbench.core.config.presets import ClosedLoop
+from symbench.core.runs.control_policy import feedforward_policy
+from symbench.core.sim.scene.scenario import Scenario
+from symbench.core.sim.tracking.learned_control import (
+    BatchPolicy,
+    Observer,
+    Tracking,
+    track,
+    track_batch,
+)
+from symbench.core.sim.tracking.references import model_jobs, oracle_policy, reference_scenarios
+
+CACHE_VERSION = 1  # bump when what is cached, or how it is measured, changes
+
+Reference = tuple[Scenario, dict[str, np.ndarray]]  # a scenario, the expert's climb of it
+
+
+@dataclass(frozen=True)
+class Calibrated:
+    """One reference the expert held, with the rows that do not depend on the model."""
+
+    scenario: Scenario
+    reference: dict[str, np.ndarray]  # the expert's climb at every physics step
+    oracle: Tracking  # the expert's recorded torques replayed (at the headline fraction)
+    floor: dict[float, Tracking]  # the PD alone, per fraction
+
+
+@dataclass(frozen=True, eq=False)
+class ClosedLoopSetup:
+    """The closed loop on `dataset`'s test climbs `test_ids` (trajectory ids), with the
+    preset's `budget` (`Preset.closed_loop`: horizon, references, PD fractions)."""
+
+    dataset: Any  # symbench.core.data.dataset.Dataset
+    test_ids: np.ndarray
+    budget: ClosedLoop
+
+    @property
+    def fractions(self) -> tuple[float, ...]:
+        """The PD fractions of the servo gains, in the preset's order."""
+        return tuple(float(f) for f in self.budget.pd_fractions)
+
+    @property
+    def headline(self) -> float:
+        """The headline PD fraction (the `pd_*` metrics)."""
+        return float(self.budget.headline_pd)
+
+    @property
+    def servo_gains(self) -> tuple[float, float]:
+        control = self.dataset.spec.control
+        return control.kp, control.kd
+
+    def gains(self, fraction: float) -> tuple[float, float]:
+        """The PD gains (kp, kd) at `fraction` of the servo gains."""
+        kp, kd = self.servo_gains
+        return fraction * kp, fraction * kd
+
+    @cached_property
+    def scenarios(self) -> list[dict[str, Any]]:
+        """The references' scenario fields, as tracked (noise-free, capped at the horizon)."""
+        return reference_scenarios(
+            self.dataset,
+            self.test_ids,
+            self.budget.references,
+            self.budget.seconds,
+            self.dataset.spec.group.rotation_order,
+        )
+
+    def expert(self, fields: dict[str, Any]) -> Reference | None:
+        """The expert's climb of `fields` recorded at every physics step (what `track`
+        needs), or None when the expert fell: no reference to track."""
+        from symbench.core.sim.climb.rollout import simulate
+
+        scenario = Scenario.from_dict(fields)
+        reference = simulate(scenario, record_period=self.dataset.spec.control.timestep)
+        return (scenario, reference.arrays) if reference.attached else None
+
+    @cached_property
+    def references(self) -> list[Reference]:
+        """The references the expert held, in order: those the model tracks."""
+        return [r for r in map(self.expert, self.scenarios) if r is not None]
+
+    def oracle(
+        self, scenario: Scenario, reference: dict[str, np.ndarray], observe: Observer | None = None
+    ) -> Tracking:
+        """The expert's recorded torques replayed at the headline fraction: its climb again,
+        to rounding; `observe` sees the physics after every step."""
+        policy = oracle_policy(reference)
+        return track(scenario, reference, policy, self.gains(self.headline), observe=observe)
+
+    def floor(self, scenario: Scenario, reference: dict[str, np.ndarray]) -> dict[float, Tracking]:
+        """The PD alone (zero feedforward) at every fraction."""
+
+        def zero(rows: dict[str, np.ndarray]) -> np.ndarray:
+            return np.zeros_like(reference["tau"][0])
+
+        return {f: track(scenario, reference, zero, self.gains(f)) for f in self.fractions}
+
+    def calibration(self, cache: Path | None = None) -> list[Calibrated | None]:
+        """Per reference scenario: None where the expert fell, else its reference with the
+        oracle and the floor. None of it depends on the model: with a `cache` folder it is
+        kept there (keyed by dataset content, robot, references and fractions) and read back
+        by the next model of a sweep."""
+        folder = None if cache is None else Path(cache) / self._cache_name()
+        if folder is not None:
+            cached = self._read(folder)
+            if cached is not None:
+                return cached
+        out: list[Calibrated | None] = []
+        for fields in self.scenarios:
+            expert = self.expert(fields)
+            if expert is None:
+                out.append(None)
+                continue
+            scenario, reference = expert
+            out.append(
+                Calibrated(
+                    scenario,
+                    reference,
+                    self.oracle(scenario, reference),
+                    self.floor(scenario, reference),
+                )
+            )
+        if folder is not None:
+            self._write(folder, out)
+        return out
+
+    def policy(
+        self, predict: Callable[[dict[str, np.ndarray]], np.ndarray], view: str
+    ) -> BatchPolicy:
+        """A trained model (`predict` on `view` inputs, trained on the `next` variant) as the
+        batch policy of `track_batch`."""
+        return feedforward_policy(predict, self.dataset.frames, view)
+
+    def job(self, reference: int, fraction: float) -> int:
+        """The index, in `track_model`'s batch, of reference `reference` at `fraction`."""
+        return reference * len(self.fractions) + self.fractions.index(fraction)
+
+    def track_model(
+        self,
+        predict: Callable[[dict[str, np.ndarray]], np.ndarray],
+        view: str,
+        references: list[Reference],
+        observers: Mapping[int, Observer] | None = None,
+    ) -> list[Tracking]:
+        """The model's rollouts, the evaluator's measurement: every reference at every
+        fraction (fractions inner, see `job`) in one lockstep batch; `observers` by job
+        index see the physics of theirs."""
+        jobs = model_jobs(references, self.fractions, self.servo_gains)
+        for i, observe in (observers or {}).items():
+            jobs[i] = replace(jobs[i], observe=observe)
+        return track_batch(jobs, self.policy(predict, view))
+
+    # --- the calibration's cache ----------------------------------------------------------
+
+    def _cache_key(self) -> dict[str, Any]:
+        return {
+            "cache_version": CACHE_VERSION,
+            "symbench": __version__,
+            "dataset_content_hash": self.dataset.content_hash,
+            "robot_spec_hash": self.dataset.spec.spec_hash(),
+            "scenarios": self.scenarios,
+            "pd_fractions": list(self.fractions),
+            "oracle_pd_fraction": self.headline,
+            "servo_gains": list(self.servo_gains),
+        }
+
+    def _cache_name(self) -> str:
+        text = json.dumps(self._cache_key(), sort_keys=True, separators=(",", ":"))
+        return hashlib.sha256(text.encode()).hexdigest()[:20]
+
+    def _write(self, folder: Path, measured: list[Calibrated | None]) -> None:
+        """References as .npz (exact float64), then calibration.json last: its presence
+        means the folder is complete."""
+        rows: list[Any] = []
+        for i, item in enumerate(measured):
+            if item is None:
+                rows.append(None)
+                continue
+            npz, arrays = io.BytesIO(), dict[str, Any](item.reference)
+            np.savez(npz, **arrays)
+            write_bytes_atomic(folder / f"reference-{i}.npz", npz.getvalue())
+            rows.append(
+                {
+                    "oracle": dict(vars(item.oracle)),
+                    "floor": [[f, dict(vars(r))] for f, r in item.floor.items()],
+                }
+            )
+        body = json.dumps({"key": self._cache_key(), "references": rows}, indent=1)
+        write_bytes_atomic(folder / "calibration.json", body.encode())
+
+    def _read(self, folder: Path) -> list[Calibrated | None] | None:
+        """The cached calibration when it is complete and of this very key, else None."""
+        key = self._cache_key()
+        try:
+            data = json.loads((folder / "calibration.json").read_text())
+            if data["key"] != json.loads(json.dumps(key)):
+                return None
+            out: list[Calibrated | None] = []
+            rows = zip(key["scenarios"], data["references"], strict=True)
+            for i, (fields, row) in enumerate(rows):
+                if row is None:
+                    out.append(None)
+                    continue
+                with np.load(folder / f"reference-{i}.npz", allow_pickle=False) as npz:
+                    reference = {k: npz[k] for k in npz.files}
+                floor = {float(f): Tracking(**r) for f, r in row["floor"]}
+                if tuple(floor) != self.fractions:
+                    return None
+                scenario = Scenario.from_dict(fields)
+                out.append(Calibrated(scenario, reference, Tracking(**row["oracle"]), floor))
+            return out
+        except (OSError, ValueError, KeyError, TypeError):
+            return None
