@@ -69,12 +69,16 @@ def drawn_context(robot: str, n: int = 120, seed: int = 0, version: str = "-v7")
     )
 
 
-def grid_context(robot: str, name: str, seed: int = 0, version: str = "-v6") -> SplitContext:
-    """A split's view of a preset's grid under the dataset id of `version` ('' for none)."""
+def grid_context(robot: str, key: str, seed: int = 0, version: str | None = None) -> SplitContext:
+    """A split's view of the scenarios of the preset `key` (a v6 grid such as `small@v6`, or
+    a v7 preset: smoke's grid or drawn climbs) under its dataset id, or under that id with
+    `version` as its ending instead ('-v7'; '' for none)."""
     spec = load_robot(robot)
-    grid = preset(name).scenarios(robot, spec.n_legs, spec.group.rotation_order)
+    found = preset(key)
+    grid = found.scenarios(robot, spec.n_legs, spec.group.rotation_order)
+    ending = f"-v{found.version}" if version is None else version
     return SplitContext(
-        dataset_id=f"{robot}-climb-{name}{version}",
+        dataset_id=f"{robot}-climb-{found.name}{ending}",
         trajectory_ids=np.arange(len(grid)),
         scenarios=tuple(s.to_dict() for s in grid),
         n_samples=np.ones(len(grid), dtype=int),
@@ -103,15 +107,21 @@ def assert_disjoint(parts: SplitIndices, context: SplitContext) -> None:
 
 
 def test_grid_rules_for_v6_and_for_grids_without_a_version_continuous_rules_from_v7():
-    assert grid_context("hexa", "small").version == 6
-    assert grid_rules(grid_context("hexa", "small"))
+    assert grid_context("hexa", "small@v6").version == 6
+    assert grid_rules(grid_context("hexa", "small@v6"))
     assert grid_rules(drawn_context("hexa", version="-v6"))  # the version decides
     assert not grid_rules(drawn_context("hexa"))
-    assert not grid_rules(grid_context("hexa", "small", version="-v7"))
+    assert not grid_rules(grid_context("hexa", "small@v6", version="-v7"))
+    # the v7 presets: drawn climbs, and smoke (still a grid) under its v7 id
+    assert grid_context("hexa", "small").version == grid_context("hexa", "smoke").version == 7
+    assert not grid_rules(grid_context("hexa", "small"))
+    assert not grid_rules(grid_context("hexa", "smoke"))
     # no version (imported logs): grid rules where some climbs are rotated images of others
-    assert grid_context("hexa", "small", version="").version is None
-    assert grid_rules(grid_context("hexa", "small", version=""))
+    assert grid_context("hexa", "small@v6", version="").version is None
+    assert grid_rules(grid_context("hexa", "small@v6", version=""))
+    assert grid_rules(grid_context("hexa", "smoke", version=""))
     assert not grid_rules(drawn_context("hexa", version=""))
+    assert not grid_rules(grid_context("hexa", "small", version=""))
 
 
 # --- the generalization splits on climbs drawn from continuous distributions --------------
@@ -174,7 +184,8 @@ def test_on_a_v7_grid_rotation_splits_test_only_what_their_name_says():
     """Smoke stays a grid in v7 (yaws 0, 180 and 250): for hexa 180 is an image of 0, so
     unseen-rotation tests the 250 climbs only and orbit-rotation the 180 ones only; on the
     small grid every climb outside the sector is an image, and unseen-rotation refuses."""
-    smoke = grid_context("hexa", "smoke", version="-v7")
+    smoke = grid_context("hexa", "smoke")
+    assert smoke.dataset_id == "hexa-climb-smoke-v7"
     unseen = resolve("unseen-rotation", smoke)
     assert set(field(smoke, seen(unseen), "yaw_deg")) == {0.0}
     assert set(field(smoke, unseen.test, "yaw_deg")) == {250.0}
@@ -182,7 +193,7 @@ def test_on_a_v7_grid_rotation_splits_test_only_what_their_name_says():
     orbit = resolve("orbit-rotation", smoke)
     assert set(field(smoke, orbit.test, "yaw_deg")) == {180.0}
     with pytest.raises(SymbenchError, match="not rotated images of them \\(16 inside, 0 such"):
-        resolve("unseen-rotation", grid_context("hexa", "small", version="-v7"))
+        resolve("unseen-rotation", grid_context("hexa", "small@v6", version="-v7"))
 
 
 # --- the size-matched iid controls --------------------------------------------------------
@@ -232,9 +243,9 @@ def test_controls_match_the_v6_splits_too(robot, name):
         for seed in (0, 3):
             if split in refused:  # the grid does not vary what the split holds out
                 with pytest.raises(SymbenchError, match=f"{split} needs"):
-                    resolve(control_name(split), grid_context(robot, name, seed))
+                    resolve(control_name(split), grid_context(robot, f"{name}@v6", seed))
                 continue
-            assert_matched(split, grid_context(robot, name, seed))
+            assert_matched(split, grid_context(robot, f"{name}@v6", seed))
 
 
 def test_the_size_check_tells_a_split_from_another():
@@ -284,7 +295,7 @@ def v6_digest() -> str:
     for robot in ROBOTS:
         for name in ("smoke", "small", "transfer"):
             for seed in (0, 1, 2):
-                context = grid_context(robot, name, seed)
+                context = grid_context(robot, f"{name}@v6", seed)
                 for split in V6_SPLITS:
                     try:
                         part: object = resolve(split, context).to_dict()
@@ -308,7 +319,9 @@ def test_the_published_v6_records_split_sizes_are_reproduced():
         record = json.loads(path.read_text())
         key = (record["robot"], record["seed"])
         if key not in contexts:
-            contexts[key] = grid_context(record["robot"], record["dataset"]["preset"], key[1])
+            contexts[key] = grid_context(
+                record["robot"], f"{record['dataset']['preset']}@v6", key[1]
+            )
         assert record["dataset"]["id"] == contexts[key].dataset_id
         sizes = resolve(record["split"], contexts[key]).sizes
         samples = record["samples"]
@@ -324,7 +337,7 @@ def test_the_cached_v6_small_dataset_splits_as_its_grid():
     from symbench.core.data import load_dataset
 
     dataset = load_dataset(dataset_id, verify_files=False)
-    grid = grid_context("hexa", "small", seed=2)
+    grid = grid_context("hexa", "small@v6", seed=2)
     assert [{**s, "robot": "hexa"} for s in dataset.scenarios] == [
         {**s, "robot": "hexa"} for s in grid.scenarios
     ]

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import dataclasses
 import itertools
+import math
 
 import numpy as np
 import pytest
@@ -11,7 +12,7 @@ from synthetic_raw import fake_simulate
 
 from symbench import hookimpl
 from symbench.core.common.errors import SymbenchError
-from symbench.core.config.presets import preset
+from symbench.core.config.presets import dataset_id, preset
 from symbench.core.data import load_dataset
 from symbench.core.data.generation.generate import generate
 from symbench.core.data.splits import SplitContext
@@ -19,7 +20,12 @@ from symbench.core.plugin import registry
 from symbench.core.plugin.entries import SplitEntry
 from symbench.core.plugin.host import PluginHost, set_host
 from symbench.core.robot.specs import load_robot
-from symbench.plugins.splits.assign import unseen_gait, unseen_inclination, unseen_rotation
+from symbench.plugins.splits.assign import (
+    iid_test_size,
+    unseen_gait,
+    unseen_inclination,
+    unseen_rotation,
+)
 
 STANDARD = (
     "iid",
@@ -46,20 +52,23 @@ TRANSFER_ONLY = (
 )
 
 
-def short_grid(robot: str, name: str = "small", seconds: float = 0.1):
-    """A preset's scenarios, shortened so that the stand-in makes them in milliseconds (here,
-    not in tests/data/conftest.py: `from conftest import` finds whichever conftest module was
-    imported last, tests/run's when tests of several folders are named)."""
+def short_grid(robot: str, key: str = "small@v6", seconds: float = 0.1):
+    """A preset's scenarios (v6's small grid unless `key` names another), shortened so that
+    the stand-in makes them in milliseconds (here, not in tests/data/conftest.py: `from
+    conftest import` finds whichever conftest module was imported last, tests/run's when tests
+    of several folders are named)."""
     spec = load_robot(robot)
-    grid = preset(name).scenarios(robot, spec.n_legs, spec.group.rotation_order)
+    grid = preset(key).scenarios(robot, spec.n_legs, spec.group.rotation_order)
     return [dataclasses.replace(s, seconds=seconds) for s in grid]
 
 
-def grid_context(robot: str, name: str) -> SplitContext:
-    """A split's view of a preset's v6 grid (the grid rules), without simulating it."""
-    grid = short_grid(robot, name)
+def preset_context(robot: str, key: str) -> SplitContext:
+    """A split's view of a preset's scenarios under its dataset id, without simulating them:
+    a v6 grid (`small@v6`: the grid rules) or v7 drawn climbs (`transfer`: the continuous
+    rules)."""
+    grid = short_grid(robot, key)
     return SplitContext(
-        dataset_id=f"{robot}-climb-{name}-v6",
+        dataset_id=dataset_id(robot, key),
         trajectory_ids=np.arange(len(grid)),
         scenarios=tuple(s.to_dict() for s in grid),
         n_samples=np.ones(len(grid), dtype=int),
@@ -72,7 +81,7 @@ def grid_context(robot: str, name: str) -> SplitContext:
 def hexa_small(home):
     generate(
         "hexa",
-        "small",
+        "small@v6",
         simulator=fake_simulate,
         show_progress=False,
         scenarios=short_grid("hexa"),
@@ -94,10 +103,10 @@ def test_the_standard_splits_are_registered():
 def hexa_transfer(home):
     generate(
         "hexa",
-        "transfer",
+        "transfer@v6",
         simulator=fake_simulate,
         show_progress=False,
-        scenarios=short_grid("hexa", "transfer"),
+        scenarios=short_grid("hexa", "transfer@v6"),
         id_override="hexa-transfer-short-v6",
     )
     return load_dataset("hexa-transfer-short-v6")
@@ -189,10 +198,32 @@ def test_no_unseen_rotation_test_climb_is_an_image_of_a_training_climb(robot):
 
 
 @pytest.mark.parametrize("robot", ["magneto", "hexa", "nona"])
+def test_no_unseen_rotation_test_climb_is_an_image_on_v7_drawn_climbs(robot):
+    """On every robot's v7 small climbs (drawn from continuous distributions): the fundamental
+    sector trains, iid's test size of the climbs outside it test, and no test climb is a
+    rotated or mirrored image of a training climb: not even their yaws' offsets within the
+    sector (nor those offsets mirrored) meet."""
+    context = preset_context(robot, "small")
+    assert context.version == 7
+    width = 360.0 / context.rotation_order
+    labels = unseen_rotation(context)
+    yaws = context.values("yaw_deg").astype(float)
+    seen = np.isin(labels, ["train", "val"])
+    test = labels == "test"
+    assert (yaws[seen] < width).all() and seen.sum() == (yaws < width).sum()
+    assert (yaws[test] >= width).all()
+    assert test.sum() == iid_test_size(len(yaws))
+    offsets = np.round(np.mod(yaws, width), 6)
+    trained = set(offsets[seen].tolist())
+    for o in offsets[test].tolist():
+        assert o not in trained and round((width - o) % width, 6) not in trained
+
+
+@pytest.mark.parametrize("robot", ["magneto", "hexa", "nona"])
 def test_unseen_inclination_tests_slopes_beyond_every_training_slope(robot):
     """On every robot's transfer grid: floor to wall trains, overhangs and the ceiling test;
     every other field's values are on both sides, so only the slope is held out."""
-    context = grid_context(robot, "transfer")
+    context = preset_context(robot, "transfer@v6")
     labels = unseen_inclination(context)
     inclinations = context.values("inclination_deg").astype(float)
     seen = np.isin(labels, ["train", "val"])
@@ -205,11 +236,32 @@ def test_unseen_inclination_tests_slopes_beyond_every_training_slope(robot):
 
 
 @pytest.mark.parametrize("robot", ["magneto", "hexa", "nona"])
+def test_unseen_inclination_on_v7_drawn_climbs_tests_slopes_beyond_every_training_slope(robot):
+    """On every robot's v7 transfer climbs (slopes drawn from floor to ceiling): the steepest
+    third of the slopes is held out and iid's test size of those climbs test, every test
+    slope beyond every training slope; the other fields' draws span both sides."""
+    context = preset_context(robot, "transfer")
+    assert context.version == 7
+    labels = unseen_inclination(context)
+    inclinations = context.values("inclination_deg").astype(float)
+    seen = np.isin(labels, ["train", "val"])
+    test = labels == "test"
+    assert test.sum() == iid_test_size(len(labels))
+    assert inclinations[test].min() > inclinations[seen].max()
+    assert (inclinations[labels == "unused"] > inclinations[seen].max()).all()
+    assert seen.sum() == len(labels) - math.ceil(len(labels) / 3)
+    for field in ("yaw_deg", "heading_deg"):
+        values = context.values(field).astype(float)
+        for part in (seen, test):  # both halves of the circle on each side
+            assert (values[part] < 180.0).any() and (values[part] >= 180.0).any(), field
+
+
+@pytest.mark.parametrize("robot", ["magneto", "hexa", "nona"])
 def test_no_unseen_gait_test_climb_is_a_rotated_training_climb(robot):
     """On every robot's transfer grid the test climbs step in the reversed order, the training
     climbs in the default one, and no rotation of the robot's group relabels the one sequence
     into the other (as cyclic sequences): a test gait is never a rotated training gait."""
-    context = grid_context(robot, "transfer")
+    context = preset_context(robot, "transfer@v6")
     labels = unseen_gait(context)
     n_legs = load_robot(robot).n_legs
     orders = [tuple(s["leg_order"] or range(n_legs)) for s in context.scenarios]
@@ -228,16 +280,24 @@ def test_no_unseen_gait_test_climb_is_a_rotated_training_climb(robot):
         assert not any(cyclic_forms(o) & cyclic_forms(tuple(range(n_legs))) for o in relabelled)
 
 
+GAIT_REFUSED = "unseen-gait needs climbs with the default leg order and climbs with"
+
+
 @pytest.mark.parametrize(
-    ("split", "message"),
+    ("split", "key", "message"),
     [
-        (unseen_inclination, "unseen-inclination needs at least 2 inclinations, found \\[90.0\\]"),
-        (unseen_gait, "unseen-gait needs climbs with the default leg order and climbs with"),
+        (
+            unseen_inclination,
+            "small@v6",
+            "unseen-inclination needs at least 2 inclinations, found \\[90.0\\]",
+        ),
+        (unseen_gait, "small@v6", GAIT_REFUSED),
+        (unseen_gait, "small", GAIT_REFUSED),  # v7 small: slopes drawn in a band, one gait
     ],
 )
-def test_the_slope_and_gait_splits_refuse_a_grid_without_either(split, message):
+def test_the_slope_and_gait_splits_refuse_a_grid_without_either(split, key, message):
     with pytest.raises(SymbenchError, match=message):
-        split(grid_context("hexa", "small"))
+        split(preset_context("hexa", key))
 
 
 def test_fractions_are_nested_and_share_the_iid_test_set(hexa_small):

@@ -10,11 +10,12 @@ import pyarrow.parquet as pq
 import pytest
 from cli_invoke import error_line
 from click.testing import CliRunner
-from synthetic_raw import synthetic_raw
+from synthetic_raw import fake_simulate, synthetic_raw
 
 from symbench.core.cli import build_cli
 from symbench.core.common.errors import SymbenchError
 from symbench.core.data import load_dataset
+from symbench.core.data.generation.generate import generate
 from symbench.core.data.importing.importer import export_dataset, import_logs
 from symbench.core.data.storage.columns import flatten
 from symbench.core.data.views import schema
@@ -22,24 +23,34 @@ from symbench.core.plugin import registry
 
 
 @pytest.mark.parametrize("fmt", ["parquet", "npz"])
-def test_export_then_import_gives_identical_views_and_splits(smoke_hexa, tmp_path, fmt):
-    original = load_dataset(smoke_hexa.dataset_id)
+@pytest.mark.parametrize(
+    ("key", "imported_id"),
+    [
+        # a v6 grid under an id without a version: its exact images give the grid rules
+        ("smoke@v6", "hexa-logs"),
+        # v7 (smoke stays a grid): the id's version picks the continuous rules, as the original's
+        ("smoke", "hexa-logs-v7"),
+    ],
+)
+def test_export_then_import_gives_identical_views_and_splits(home, tmp_path, fmt, key, imported_id):
+    report = generate("hexa", key, simulator=fake_simulate, show_progress=False)
+    original = load_dataset(report.dataset_id)
     folder = export_dataset(original, tmp_path / "logs", fmt)
-    imported = import_logs(folder, "hexa-logs")
+    imported = import_logs(folder, imported_id)
     assert imported.metadata["source"] == "imported"
     for view in schema.VIEWS:
         for variant in schema.VARIANTS:
             a, b = original.view(view, variant), imported.view(view, variant)
-            for key in a.inputs:
-                np.testing.assert_array_equal(a.inputs[key], b.inputs[key])
+            for key_ in a.inputs:
+                np.testing.assert_array_equal(a.inputs[key_], b.inputs[key_])
             np.testing.assert_array_equal(a.target, b.target)
-    for split in ("iid", "unseen-heading", "unseen-rotation"):
+    for split in ("iid", "unseen-heading", "unseen-rotation", "orbit-rotation"):
         assert (
             original.split_indices(split, 2).to_dict() == imported.split_indices(split, 2).to_dict()
         )
     with pytest.raises(SymbenchError, match="already exists"):
-        import_logs(folder, "hexa-logs")
-    import_logs(folder, "hexa-logs", force=True)
+        import_logs(folder, imported_id)
+    import_logs(folder, imported_id, force=True)
 
 
 def _write_log(folder, n_legs=6, robot="hexa", n_steps=20, fmt="parquet", edit=None, period=0.006):
@@ -141,12 +152,13 @@ def test_cli_import_info_and_export(smoke_hexa, home, tmp_path):
         f"content hash {again.content_hash}"
     )
     assert again.n_samples.sum() == info["samples"]
-    out = runner.invoke(cli, ["data", "info", "hexa-climb-paper-v6"])
-    assert error_line(out, 1) == (
-        f"Error: dataset 'hexa-climb-paper-v6' is not in the cache "
-        f"({home / 'datasets' / 'hexa-climb-paper-v6'}); generate it with: "
-        "symbench data generate --robot hexa --preset paper"
-    )
+    for missing, key in (("hexa-climb-paper-v7", "paper"), ("hexa-climb-paper-v6", "paper@v6")):
+        out = runner.invoke(cli, ["data", "info", missing])
+        assert error_line(out, 1) == (
+            f"Error: dataset '{missing}' is not in the cache "
+            f"({home / 'datasets' / missing}); generate it with: "
+            f"symbench data generate --robot hexa --preset {key}"
+        )
     out = runner.invoke(cli, ["data", "info", smoke_hexa.dataset_id])
     assert out.exit_code == 0, out.output
     parts = ("train", "val", "test")
@@ -174,7 +186,13 @@ def _manifest(folder, **fields):
 @pytest.mark.parametrize(
     ("scenario", "message"),
     [
-        ({"direction": "walkset"}, r"direction \(file run\.parquet\): .*'forward'.*'walkset'"),
+        # one message naming both kinds of direction (a name, or degrees since v7)
+        (
+            {"direction": "walkset"},
+            r"direction \(file run\.parquet\): .*'forward'.*or a finite number of degrees, "
+            r"got 'walkset'$",
+        ),
+        ({"direction": True}, r"direction \(file run\.parquet\): .*'right' or a finite.*True$"),
         ({"inclination_deg": 400}, r"inclination_deg \(file run\.parquet\): .*180.*got 400"),
         ({"heading_deg": "north"}, r"heading_deg \(file run\.parquet\): .*number.*'north'"),
     ],

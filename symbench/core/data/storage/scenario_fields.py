@@ -4,13 +4,30 @@ never meet a heading of "north" or NaN."""
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+import math
+from typing import Annotated
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, ConfigDict, Field, PlainValidator
+from pydantic_core import PydanticCustomError
 
 from symbench.core.sim.scene.scenario import DIRECTIONS
 
 Finite = Annotated[float, Field(allow_inf_nan=False)]
+_NAMES = ", ".join(repr(name) for name in DIRECTIONS)
+
+
+def _direction(value: object) -> str | float:
+    """A named body direction, or degrees (finite): one error naming both, not one per kind."""
+    if isinstance(value, str) and value in DIRECTIONS:
+        return value
+    if isinstance(value, int | float) and not isinstance(value, bool) and math.isfinite(value):
+        return float(value)
+    raise PydanticCustomError(
+        "direction", f"Input should be one of {_NAMES} or a finite number of degrees"
+    )
+
+
+Direction = Annotated[str | float, PlainValidator(_direction)]
 
 
 class ScenarioFields(BaseModel):
@@ -22,7 +39,7 @@ class ScenarioFields(BaseModel):
     heading_deg: Finite | None = None
     yaw_deg: Finite | None = None
     # a named body direction, or (data drawn from continuous distributions) degrees
-    direction: Literal[tuple(DIRECTIONS)] | Finite | None = None  # type: ignore[valid-type]
+    direction: Direction | None = None
     leg_order: list[Annotated[int, Field(ge=0)]] | None = None
     seed: Annotated[int, Field(ge=0)] | None = None
     seconds: Annotated[float, Field(gt=0, allow_inf_nan=False)] | None = None
