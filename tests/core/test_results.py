@@ -23,14 +23,14 @@ def test_round_trip(valid_record, tmp_path):
     assert read_record(path) == written
     assert written.seal == seal_of(json.loads(path.read_text()))
     # a record from before the converge protocol was trained under the paper's rule
-    assert written.key() == "hexa-climb-smoke-v6__smoke__iid__sdnn__acc__torch__paper__seed0"
+    assert written.key() == "hexa-climb-smoke-v7__smoke__iid__sdnn__acc__torch__paper__seed0"
     assert not list(tmp_path.glob(".*tmp"))  # the atomic write left no temp file
     record = valid_record()
     record["training"]["config"].update(
         protocol="converge", max_steps=30, eval_every=10, patience=2
     )
     converge = write_record(record, tmp_path / "c.json")
-    assert converge.key() == "hexa-climb-smoke-v6__smoke__iid__sdnn__acc__torch__converge__seed0"
+    assert converge.key() == "hexa-climb-smoke-v7__smoke__iid__sdnn__acc__torch__converge__seed0"
 
 
 def test_provenance_is_filled():
@@ -107,7 +107,7 @@ def test_schema_1_records_are_shown_but_not_trusted(valid_record, as_schema_1, t
     path.write_text(json.dumps(as_schema_1(valid_record())))
     assert (
         read_display_record(path).key()
-        == "hexa-climb-smoke-v6__smoke__iid__sdnn__acc__torch__paper__seed0"
+        == "hexa-climb-smoke-v7__smoke__iid__sdnn__acc__torch__paper__seed0"
     )
     with pytest.raises(SymbenchError) as error:
         read_record(path)

@@ -23,7 +23,7 @@ from symbench.core.data.storage.files import step_count
 from symbench.core.data.storage.metadata import METADATA, content_hash
 from symbench.core.plugin import registry
 
-DATASET = "hexa-climb-smoke-v6"
+DATASET = "hexa-climb-smoke-v7"
 
 
 @pytest.fixture(scope="module")

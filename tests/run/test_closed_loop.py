@@ -71,7 +71,7 @@ def test_replay_holds_over_a_small_preset_climb(robot):
 def test_the_reference_is_the_datasets_climb_every_physics_step(smoke_home):
     from symbench.core.data import load_dataset
 
-    dataset = load_dataset("hexa-climb-smoke-v6")
+    dataset = load_dataset("hexa-climb-smoke-v7")
     raw, ids = dataset.raw()
     fields = dataset.scenarios[0]
     reference = expert_reference(Scenario.from_dict(fields)).arrays
@@ -143,8 +143,8 @@ def test_closed_loop_evaluator_in_a_run(smoke_home, tmp_path):
     )
     metrics = record.metrics["closed-loop"]
     # trained on the noisy variant of the standard dataset (made when missing), saying so
-    assert metrics["trained_on"] == "hexa-climb-smoke-noisy-v6"
-    folders = list((tmp_path / "checkpoints").glob("*/*/hexa-climb-smoke-noisy-v6-*/iid__next"))
+    assert metrics["trained_on"] == "hexa-climb-smoke-noisy-v7"
+    folders = list((tmp_path / "checkpoints").glob("*/*/hexa-climb-smoke-noisy-v7-*/iid__next"))
     assert len(folders) == 1
     assert metrics["references"] >= 1 and metrics["horizon_s"] == 1.0  # the climb's length
     assert metrics["pd_fractions"] == [0.0, 0.1, 0.3, 1.0]
@@ -267,7 +267,7 @@ def test_trainings_ahead_in_parallel_give_the_same_record(smoke_home, tmp_path):
             stages[workers].append,
         )
     alone, together = records[1], records[2]
-    noisy = "hexa-climb-smoke-noisy-v6 iid (next variant)"
+    noisy = "hexa-climb-smoke-noisy-v7 iid (next variant)"
     assert "training" in stages[1] and f"training on {noisy}" in stages[1]
     # the stages say that the models trained ahead are loaded, not trained again
     assert "training" not in stages[2] and not any(s.startswith("training on") for s in stages[2])
@@ -298,10 +298,10 @@ class _Renamed:
 @pytest.mark.parametrize(
     ("did", "variant", "trained_on"),
     [
-        ("hexa-climb-smoke-v6", "acc", "hexa-climb-smoke-noisy-v6"),
-        ("hexa-climb-smoke-v6", "next", "hexa-climb-smoke-noisy-v6"),
-        ("hexa-climb-paper-v6", "acc", None),  # paper's closed loop trains on its own data
-        ("hexa-climb-paper-v6", "next", "own"),  # ... and then judges the run's own model
+        ("hexa-climb-smoke-v7", "acc", "hexa-climb-smoke-noisy-v7"),
+        ("hexa-climb-smoke-v7", "next", "hexa-climb-smoke-noisy-v7"),
+        ("hexa-climb-paper-v7", "acc", None),  # paper's closed loop trains on its own data
+        ("hexa-climb-paper-v7", "next", "own"),  # ... and then judges the run's own model
     ],
 )
 def test_the_closed_loop_declares_its_training_where_its_preset_says(
@@ -318,7 +318,7 @@ def test_the_closed_loop_declares_its_training_where_its_preset_says(
         raise AssertionError("planning only")
 
     spec = RunSpec(model="sdnn", robot="hexa", preset="smoke", variant=variant)
-    dataset = _Renamed(load_dataset("hexa-climb-smoke-v6"), did)
+    dataset = _Renamed(load_dataset("hexa-climb-smoke-v7"), did)
     context = EvaluationContext(
         entry=model_entry(spec),
         dataset=dataset,

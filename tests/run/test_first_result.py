@@ -53,8 +53,9 @@ def test_each_stage_is_announced_with_the_time_so_far(smoke_home, tmp_path):
         "evaluating torque-error",
         "evaluating equivariance",
         "evaluating invariance",
+        "evaluating image-overlap",
     ]
     record = read_record(
-        tmp_path / "hexa-climb-smoke-v6__smoke__iid__sdnn__acc__torch__converge__seed0.json"
+        tmp_path / "hexa-climb-smoke-v7__smoke__iid__sdnn__acc__torch__converge__seed0.json"
     )
     assert list(record.metrics) == list(spec.FIRST_RESULT_EVALUATORS)

@@ -75,7 +75,7 @@ def test_cli_prints_a_table_and_writes_the_record(smoke_home, tmp_path):
         catch_exceptions=False,
     )
     assert result.exit_code == 0, result.output
-    path = tmp_path / "hexa-climb-smoke-v6__smoke__iid__sdnn__acc__torch__converge__seed0.json"
+    path = tmp_path / "hexa-climb-smoke-v7__smoke__iid__sdnn__acc__torch__converge__seed0.json"
     record = read_record(path)
     assert record.split == "iid"
     table, written = result.stdout.split("result record:")
@@ -126,7 +126,7 @@ def test_a_run_may_choose_the_next_variant(smoke_home, tmp_path):
     assert record.model.variant == "next"
     assert (
         spec.record_path.name
-        == "hexa-climb-smoke-v6__smoke__iid__sdnn__next__torch__converge__seed0.json"
+        == "hexa-climb-smoke-v7__smoke__iid__sdnn__next__torch__converge__seed0.json"
     )
     assert record.metrics["equivariance"]["max_rel_error"] < 1e-4
     with pytest.raises(UnknownNameError, match="did you mean next"):

@@ -30,8 +30,8 @@ from symbench.core.runs.results import read_record, write_record
 from symbench.core.runs.runner import RunSpec, run
 from symbench.core.runs.sweep import plan, sweep
 
-SMOKE = "hexa-climb-smoke-v6"
-SMALL = "hexa-climb-small-v6"
+SMOKE = "hexa-climb-smoke-v7"
+SMALL = "hexa-climb-small-v7"
 LOGS = "hexa-logs"  # imported: the smoke trajectories exported and imported again
 
 

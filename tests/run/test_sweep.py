@@ -104,10 +104,10 @@ def test_a_sweep_makes_the_data_its_evaluators_train_on_before_any_run(
 
     home = tmp_path / "home"
     shutil.copytree(
-        smoke_home / "datasets" / "hexa-climb-smoke-v6", home / "datasets" / "hexa-climb-smoke-v6"
+        smoke_home / "datasets" / "hexa-climb-smoke-v7", home / "datasets" / "hexa-climb-smoke-v7"
     )
     monkeypatch.setenv("SYMBENCH_HOME", str(home))
-    noisy = home / "datasets" / "hexa-climb-smoke-noisy-v6"
+    noisy = home / "datasets" / "hexa-climb-smoke-noisy-v7"
     seen: list[bool] = []
     monkeypatch.setattr(
         sweeping, "_run_quietly", lambda spec: seen.append(noisy.is_dir()) or spec.key()
@@ -124,7 +124,7 @@ def test_a_sweep_makes_the_data_its_evaluators_train_on_before_any_run(
     dataset = ensure_dataset(controlled[0])
     with monkeypatch.context() as no_views:  # planning builds no samples (paper: ~20 s a run)
         no_views.setattr(type(dataset), "view", lambda *a, **k: pytest.fail("built a view"))
-        assert declared_datasets(controlled[0], dataset) == ["hexa-climb-smoke-noisy-v6"]
+        assert declared_datasets(controlled[0], dataset) == ["hexa-climb-smoke-noisy-v7"]
     seen.clear()
     sweep(controlled, report=lambda message: None)
     assert seen == [True, True]

@@ -45,8 +45,10 @@ NEED_TEXT = {
 }
 PERIOD_TOLERANCE = 0.05  # relative: a record period this close to RECORD_PERIOD is the same
 # The scenario fields that make a scenario complete, enough for a simulator replay (a
-# missing leg order means the default one, a missing torque noise none).
-REPLAY_FIELDS = tuple(k for k in SCENARIO_KEYS if k not in ("leg_order", "torque_noise"))
+# missing leg order means the default one, a missing torque noise or gait spread none).
+REPLAY_FIELDS = tuple(
+    k for k in SCENARIO_KEYS if k not in ("leg_order", "torque_noise", "gait_spread")
+)
 RAW_COLUMNS = ("base_pos", "base_quat", "base_linvel", "base_angvel", "base_linacc", "q", "qd")
 
 
