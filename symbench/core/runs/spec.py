@@ -36,6 +36,7 @@ DEFAULT_EVALUATORS = (
     "generalization",
     "closed-loop",
     "image-overlap",
+    "generalization-gap",
 )
 FIRST_RESULT_EVALUATORS = ("torque-error", "equivariance", "invariance", "image-overlap")
 

@@ -9,6 +9,7 @@ from symbench.plugins.evaluators import (
     data_symmetry,
     equivariance,
     generalization,
+    generalization_gap,
     image_overlap,
     invariance,
     sample_efficiency,
@@ -24,6 +25,7 @@ MODULES = (
     closed_loop,
     data_symmetry,
     image_overlap,
+    generalization_gap,
 )
 # What each needs from the dataset beyond its test samples (symbench.EVALUATOR_NEEDS); a run
 # on a dataset without it skips the evaluator with the reason. The closed-loop evaluator
@@ -37,6 +39,7 @@ NEEDS: dict[str, tuple[str, ...]] = {
     closed_loop.NAME: ("simulator", "variant:next"),
     data_symmetry.NAME: ("raw", "scenarios"),  # pairs climbs by their scenarios
     image_overlap.NAME: ("raw",),  # compares raw states after relabelling
+    generalization_gap.NAME: (),  # trains on the split's control
 }
 
 
