@@ -13,7 +13,6 @@ import pytest
 from cli_invoke import error_line, invoke
 from stand_ins import closed_loop_dataset, trained_on_split
 
-import symbench
 from symbench.core.common.errors import SymbenchError, UnknownNameError
 from symbench.core.config.cli import SECTIONS, _cell
 from symbench.core.config.datasets import ClimbDistribution, ScenarioGrid
@@ -303,11 +302,12 @@ def test_closed_loop_tracks_the_presets_references_over_its_horizon(
         arrays = {"t": 0.001 * np.arange(steps), "tau": np.zeros((steps, 6, 3))}
         return SimpleNamespace(attached=True, arrays=arrays)
 
-    def track(scenario, reference, policy, pd):
+    def track(scenario, reference, policy, pd, observe=None):
         tracked.append(pd)
         return SimpleNamespace(
             attached=True,
             time_to_failure_s=scenario.seconds,
+            steps=int(round(scenario.seconds / 0.001)),
             joint_rmse_rad=0.0,
             base_drift_m=0.0,
             base_drift_deg=0.0,
@@ -317,9 +317,10 @@ def test_closed_loop_tracks_the_presets_references_over_its_horizon(
     def track_batch(jobs, policy):  # the model's rollouts, in the order of its jobs
         return [track(job.scenario, job.reference, policy, job.pd_gains) for job in jobs]
 
-    monkeypatch.setattr(symbench, "simulate", simulate)
-    monkeypatch.setattr(symbench, "track", track)
-    monkeypatch.setattr(symbench, "track_batch", track_batch)
+    # where the closed loop's one implementation (`ClosedLoopSetup`) finds them
+    monkeypatch.setattr("symbench.core.sim.climb.rollout.simulate", simulate)
+    monkeypatch.setattr("symbench.core.runs.closed_loop.track", track)
+    monkeypatch.setattr("symbench.core.runs.closed_loop.track_batch", track_batch)
     budget = ClosedLoop(
         seconds=0.05, references=references, pd_fractions=(0.0, 0.5), headline_pd=0.5
     )

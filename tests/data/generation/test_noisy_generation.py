@@ -12,7 +12,6 @@ import numpy as np
 import pytest
 from stand_ins import closed_loop_dataset, trained_on_split
 
-import symbench
 from symbench.core.common.errors import SymbenchError
 from symbench.core.config.presets import PRESETS, dataset_id, parse_dataset_id
 from symbench.core.data.storage.scenario_fields import StoredScenario
@@ -139,11 +138,12 @@ def test_the_closed_loop_trains_on_the_noisy_variant_and_says_so(
         arrays = {"t": 0.001 * np.arange(steps), "tau": np.zeros((steps, 6, 3))}
         return SimpleNamespace(attached=True, arrays=arrays)
 
-    def track(scenario, reference, policy, pd):
+    def track(scenario, reference, policy, pd, observe=None):
         policy({"t": np.zeros(1)})  # the model is asked
         return SimpleNamespace(
             attached=True,
             time_to_failure_s=scenario.seconds,
+            steps=int(round(scenario.seconds / 0.001)),
             joint_rmse_rad=0.0,
             base_drift_m=0.0,
             base_drift_deg=0.0,
@@ -161,9 +161,10 @@ def test_the_closed_loop_trains_on_the_noisy_variant_and_says_so(
     def track_batch(jobs, policy):  # the model's rollouts (its policy is built, not run)
         return [track(job.scenario, job.reference, lambda rows: None, job.pd_gains) for job in jobs]
 
-    monkeypatch.setattr(symbench, "simulate", simulate)
-    monkeypatch.setattr(symbench, "track", track)
-    monkeypatch.setattr(symbench, "track_batch", track_batch)
+    # where the closed loop's one implementation (`ClosedLoopSetup`) finds them
+    monkeypatch.setattr("symbench.core.sim.climb.rollout.simulate", simulate)
+    monkeypatch.setattr("symbench.core.runs.closed_loop.track", track)
+    monkeypatch.setattr("symbench.core.runs.closed_loop.track_batch", track_batch)
     noise = {"torque_noise": 0.5} if "noisy" in did else {}
     dataset = closed_loop_dataset(
         [{"robot": "hexa", "yaw_deg": 10.0 * i, **noise} for i in range(2)], did
