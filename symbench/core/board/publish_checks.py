@@ -51,11 +51,17 @@ class RecordChecks:
         return f"{preset}-preset records are not published (this board takes {takes})"
 
     def _dataset_problem(self, record: ResultRecord) -> str:
-        from symbench.core.config.presets import dataset_id
+        from symbench.core.config.presets import dataset_id, parse_dataset_id, preset
 
         did = record.dataset.id
         expected = dataset_id(record.robot, record.dataset.preset)
-        if did != expected:
+        parsed = parse_dataset_id(did)
+        earlier = (  # a standard dataset of an earlier version of the preset (`small@v6`)
+            parsed is not None
+            and parsed[0] == record.robot
+            and preset(parsed[1]).name == record.dataset.preset
+        )
+        if did != expected and not earlier:
             return (
                 f"dataset '{did}' is not the standard dataset of {record.robot} on preset "
                 f"{record.dataset.preset} ('{expected}'); records on imported data go on "
