@@ -188,3 +188,35 @@ def test_a_stand_in_simulator_runs_in_process_although_numerics_are_not_pinned(h
         lambda: lambda s, record_period: fake_simulate(s, record_period),
     )
     assert generation.ensure_dataset("hexa", "smoke", workers=1, show_progress=False).n_legs == 6
+
+
+def _detaching_on(yaw: float):
+    """The stand-in simulator, but every climb starting at `yaw` falls off."""
+
+    def simulate(scenario: Scenario, record_period: float):
+        rollout = fake_simulate(scenario, record_period)
+        if scenario.yaw_deg == yaw:
+            return type(rollout)(rollout.arrays, False, "foot 1 left the surface at 0.2 s")
+        return rollout
+
+    return simulate
+
+
+def test_a_preset_whose_expert_fails_too_often_is_not_made_standard(home):
+    """smoke's grid: 2 of its 6 climbs start at yaw 250; failing them is a third of the
+    climbs, over the 10 % a standard dataset allows: refused in one line, nothing written
+    as a dataset, the finished climbs kept for a resume."""
+    with pytest.raises(SymbenchError, match=r"the expert failed 2 of 6 climbs, more than the 10%"):
+        generate("hexa", "smoke", simulator=_detaching_on(250.0), show_progress=False)
+    assert not (dataset_dir("hexa-climb-smoke-v7") / "metadata.json").exists()
+    assert record_path(dataset_dir("hexa-climb-smoke-v7"), 0).exists()  # kept for a resume
+
+
+def test_failures_within_the_stated_share_still_make_a_standard_dataset(home, monkeypatch):
+    from dataclasses import replace
+
+    from symbench.core.config import presets
+
+    monkeypatch.setitem(presets.PRESETS, "smoke", replace(presets.SMOKE, max_failed_share=0.5))
+    report = generate("hexa", "smoke", simulator=_detaching_on(250.0), show_progress=False)
+    assert report.n_failed == 2 and report.n_trajectories == 4
