@@ -38,3 +38,16 @@ def closed_loop_dataset(scenarios: list[dict], dataset_id: str | None = None) ->
         trajectory_ids=np.arange(len(scenarios)),
         scenarios=scenarios,
     )
+
+
+def tracked_to_the_end(scenario) -> SimpleNamespace:
+    """What `track` returns for a stand-in model that holds on over the whole climb."""
+    return SimpleNamespace(
+        attached=True,
+        time_to_failure_s=scenario.seconds,
+        steps=int(round(scenario.seconds / 0.001)),
+        joint_rmse_rad=0.0,
+        base_drift_m=0.0,
+        base_drift_deg=0.0,
+        failure=None,
+    )

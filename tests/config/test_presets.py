@@ -11,7 +11,7 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 from cli_invoke import error_line, invoke
-from stand_ins import closed_loop_dataset, trained_on_split
+from stand_ins import closed_loop_dataset, tracked_to_the_end, trained_on_split
 
 from symbench.core.common.errors import SymbenchError, UnknownNameError
 from symbench.core.config.cli import SECTIONS, _cell
@@ -304,15 +304,7 @@ def test_closed_loop_tracks_the_presets_references_over_its_horizon(
 
     def track(scenario, reference, policy, pd, observe=None):
         tracked.append(pd)
-        return SimpleNamespace(
-            attached=True,
-            time_to_failure_s=scenario.seconds,
-            steps=int(round(scenario.seconds / 0.001)),
-            joint_rmse_rad=0.0,
-            base_drift_m=0.0,
-            base_drift_deg=0.0,
-            failure=None,
-        )
+        return tracked_to_the_end(scenario)
 
     def track_batch(jobs, policy):  # the model's rollouts, in the order of its jobs
         return [track(job.scenario, job.reference, policy, job.pd_gains) for job in jobs]

@@ -140,20 +140,20 @@ GAIT_SPREAD = 0.2
 _BAND = (45.0, 135.0)
 
 # smoke stays a small grid (tests build on its exact images: 0, 180 and 250 degrees of yaw,
-# two headings), now stepping with drawn swings and goals like the v7 climbs
+# two headings), since v7 stepping with drawn swings and goals like the drawn climbs
+_SMOKE_GRID = ScenarioGrid(
+    inclinations_deg=(90.0,),
+    headings_deg=(0.0, 180.0),
+    yaws_per_turn=0,
+    directions=("forward",),
+    leg_orders=("default",),
+    seeds=(0,),
+    seconds=1.0,
+)
 SMOKE = Preset(
     "smoke",
     "a few one-second trajectories, for tests (seconds)",
-    ScenarioGrid(
-        inclinations_deg=(90.0,),
-        headings_deg=(0.0, 180.0),
-        yaws_per_turn=0,
-        directions=("forward",),
-        leg_orders=("default",),
-        seeds=(0,),
-        seconds=1.0,
-        gait_spread=GAIT_SPREAD,
-    ),
+    replace(_SMOKE_GRID, gait_spread=GAIT_SPREAD),
     _SMOKE_TRAINING,
     _EVALUATION,
     ClosedLoop(1.0, 2, _PD_FRACTIONS, 0.1, train_preset="smoke-noisy"),
@@ -233,15 +233,7 @@ def _v6(base: Preset, dataset: ScenarioGrid, closed_loop: ClosedLoop) -> Preset:
 
 _V6_SMOKE = _v6(
     SMOKE,
-    ScenarioGrid(
-        inclinations_deg=(90.0,),
-        headings_deg=(0.0, 180.0),
-        yaws_per_turn=0,
-        directions=("forward",),
-        leg_orders=("default",),
-        seeds=(0,),
-        seconds=1.0,
-    ),
+    _SMOKE_GRID,
     ClosedLoop(1.0, 2, _PD_FRACTIONS, 0.1, train_preset="smoke-noisy@v6"),
 )
 _V6_SMALL = _v6(

@@ -10,7 +10,7 @@ from types import SimpleNamespace
 
 import numpy as np
 import pytest
-from stand_ins import closed_loop_dataset, trained_on_split
+from stand_ins import closed_loop_dataset, tracked_to_the_end, trained_on_split
 
 from symbench.core.common.errors import SymbenchError
 from symbench.core.config.presets import PRESETS, dataset_id, parse_dataset_id
@@ -140,15 +140,7 @@ def test_the_closed_loop_trains_on_the_noisy_variant_and_says_so(
 
     def track(scenario, reference, policy, pd, observe=None):
         policy({"t": np.zeros(1)})  # the model is asked
-        return SimpleNamespace(
-            attached=True,
-            time_to_failure_s=scenario.seconds,
-            steps=int(round(scenario.seconds / 0.001)),
-            joint_rmse_rad=0.0,
-            base_drift_m=0.0,
-            base_drift_deg=0.0,
-            failure=None,
-        )
+        return tracked_to_the_end(scenario)
 
     def retrain(split, variant):
         asked.append((did, split, variant))
