@@ -37,7 +37,7 @@ class Detachment:
 def describe_fall(
     state: int, stance: np.ndarray, contact: np.ndarray, qpos: np.ndarray, normal: np.ndarray
 ) -> str:
-    """The words for a `contact_kernel` status other than HOLDING."""
+    """The words for a `contact.kernel` status other than HOLDING."""
     if state == DIVERGED:
         return "the physics diverged (non-finite accelerations)"
     if state == FOOT_LOST:

@@ -18,7 +18,7 @@ Every control step:
    implicit integrator keeps it stable, the controller sends u = tau_ff + Kp q_ref + Kd qd_ref.
 The friction pyramid's tangent axes follow each leg's frame, so nothing depends on leg
 numbering beyond relabelling: the whole loop is equivariant under the robot's rotations.
-The arithmetic of steps 1-3 is compiled (`control_kernel`); this class holds what does not
+The arithmetic of steps 1-3 is compiled (`control.kernel`); this class holds what does not
 change between steps and asks the gait plan and the QP solver.
 """
 
@@ -158,7 +158,7 @@ class WholeBodyController:
 
 
 def _gain_vector(spec: RobotSpec, g: ControllerGains) -> np.ndarray:
-    """The kernel's float settings, at the indices `control_kernel` names."""
+    """The kernel's float settings, at the indices `control.kernel` names."""
     values = np.zeros(kernel.N_GAINS)
     values[kernel.BASE_KP], values[kernel.BASE_KD] = g.base_kp, g.base_kd
     values[kernel.SWING_KP], values[kernel.SWING_KD] = g.swing_kp, g.swing_kd

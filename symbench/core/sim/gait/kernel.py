@@ -1,7 +1,7 @@
 """The gait plan's per-step arithmetic, compiled: which leg steps, its magnet, the planned
 base motion and the stepping sole's target at time t. It runs at every 1 kHz control step
-(see `control_kernel` on why compiled code gives the same bits on every CPU); the plan's
-meaning is documented in `gait`.
+(see `control.kernel` on why compiled code gives the same bits on every CPU); the plan's
+meaning is documented in `gait.plan`.
 """
 
 from __future__ import annotations
