@@ -23,6 +23,7 @@ class Architecture:
     learning_rate: float  # chosen by `symbench tune` (leaderboards/tuning/README.md)
     description: str
     widths: tuple[str, ...]  # the build keywords `symbench tune` scales together
+    version: int  # raised whenever what the network computes changes (ModelEntry.version)
 
 
 ARCHITECTURES = (
@@ -34,6 +35,7 @@ ARCHITECTURES = (
         3e-3,
         f"MLP ({FFNN.layers} x {FFNN.width}) on the stacked world-frame vector",
         ("width",),
+        1,
     ),
     Architecture(
         "ffnn-leg",
@@ -43,6 +45,7 @@ ARCHITECTURES = (
         1e-3,
         "the ffnn MLP on the flattened leg-grouped view",
         ("width",),
+        1,
     ),
     Architecture(
         "gnn",
@@ -52,6 +55,7 @@ ARCHITECTURES = (
         3e-3,
         f"typical graph network (bodies as nodes, joints as edges), {GNN.steps} steps",
         ("edge", "node", "glob"),
+        1,
     ),
     Architecture(
         "sdgnn",
@@ -61,6 +65,7 @@ ARCHITECTURES = (
         1e-3,
         f"symmetric graph network: base and feet as nodes, legs as edges, {SDGNN.steps} steps",
         ("edge", "node", "glob"),
+        1,
     ),
     Architecture(
         "sdnn",
@@ -70,6 +75,7 @@ ARCHITECTURES = (
         1.5e-3,
         f"shared per-leg MLPs, sum over legs, {SDNN.steps} processing steps",
         ("latent",),
+        1,
     ),
 )
 
@@ -86,6 +92,7 @@ def model_entries(backend: str, package: str, variant: str = "acc") -> list[Mode
             a.learning_rate,
             a.description,
             a.widths,
+            a.version,
         )
         for a in ARCHITECTURES
     ]

@@ -99,6 +99,9 @@ def _model(**change):
         ({"name": "my model"}, "model name 'my model' is not a name"),
         ({"name": "a/b"}, "model name 'a/b' is not a name"),
         ({"equivariant": "yes"}, "model 'm': equivariant must be True or False"),
+        ({"version": 0}, "model 'm': version must be a positive integer, got 0"),
+        ({"version": True}, "model 'm': version must be a positive integer, got True"),
+        ({"version": "2"}, "model 'm': version must be a positive integer, got '2'"),
     ],
 )
 def test_a_wrong_model_entry_fails_when_made(change, message):

@@ -16,6 +16,7 @@ from click.testing import CliRunner
 from symbench.core.board.publish import publish
 from symbench.core.cli import build_cli
 from symbench.core.common.errors import SymbenchError
+from symbench.core.plugin import registry
 from symbench.core.runs import runner
 from symbench.core.runs.results import read_record, write_record
 from symbench.core.runs.runner import RunSpec, run
@@ -191,3 +192,18 @@ def test_a_caller_on_other_torch_kernels_still_reproduces_the_record(records, sm
     )
     assert out.returncode == 0, out.stdout + out.stderr
     assert "warning" not in out.stderr and "values agree" in out.stdout
+
+
+def test_a_record_of_another_model_version_is_refused_not_re_run(records, tmp_path):
+    """A record carries its model's version; one made before the network's computation
+    changed is refused with both versions named, before anything is trained."""
+    here = registry.model("sdnn", "torch").version
+    assert read_record(records[0]).model.version == here
+    data = json.loads(records[0].read_text())
+    data["model"]["version"] = here + 1
+    other = write_record(data, tmp_path / records[0].name)
+    assert other.configuration()["model version"] == here + 1
+    result = verify(str(tmp_path / records[0].name))
+    assert result.exit_code == 1
+    expected = f"made with sdnn (torch) version {here + 1}, but this code builds version {here}"
+    assert expected in " ".join(result.output.split())

@@ -71,6 +71,10 @@ class ModelEntry:
     `widths` names the build keywords that set the network's width (integers with
     defaults): `symbench tune` scales them together, and `--parameters` scales them to a
     parameter count; empty, the network's size is not searched or matched.
+    `version` numbers the network's computation: raise it whenever a change alters what the
+    network computes, float summation order included. Records carry it, a run's identity
+    and resume checkpoints include it, and `symbench verify` never re-runs a record of
+    another version (its numbers could not come out the same).
     """
 
     name: str
@@ -82,6 +86,7 @@ class ModelEntry:
     learning_rate: float = 1e-3
     description: str = ""
     widths: tuple[str, ...] = ()
+    version: int = 1
 
     def __post_init__(self) -> None:
         _check_name("model", self.name)
@@ -95,6 +100,10 @@ class ModelEntry:
         if isinstance(rate, bool) or not isinstance(rate, (int, float)) or not 0 < rate < 1:
             raise InvalidEntryError(
                 f"model '{self.name}': learning_rate must be a number in (0, 1), got {rate!r}"
+            )
+        if isinstance(self.version, bool) or not isinstance(self.version, int) or self.version < 1:
+            raise InvalidEntryError(
+                f"model '{self.name}': version must be a positive integer, got {self.version!r}"
             )
         if not isinstance(self.widths, tuple) or not all(isinstance(w, str) for w in self.widths):
             raise InvalidEntryError(

@@ -92,6 +92,12 @@ class ModelInfo(ModelInfoV1):
         description="every keyword of the build function, defaults included"
     )
     plugin: PluginInfo
+    version: int = Field(
+        default=1,
+        ge=1,
+        description="the model entry's version: what the network computes (records made "
+        "before versions were recorded read as version 1)",
+    )
 
 
 class DatasetInfo(_Strict):
@@ -207,6 +213,7 @@ class RecordBody(RecordV1):
             "split": self.split,
             "seed": self.seed,
             "model": m.name,
+            "model version": m.version,
             "backend": m.backend,
             "input variant": m.variant,
             "evaluators": sorted(self.metrics),

@@ -125,6 +125,7 @@ def configuration(spec: RunSpec, content_hash: str | None = None) -> dict[str, A
         "split": spec.split,
         "seed": spec.seed,
         "model": entry.name,
+        "model version": entry.version,
         "backend": entry.backend,
         "input variant": entry.variant,
         "evaluators": sorted(spec.evaluators),

@@ -117,6 +117,7 @@ def record_body(
                 "learning_rate": config.rate_for(entry),
                 "parameters": model.n_params,
                 "plugin": plugin_info(entry),
+                "version": entry.version,
             }
         ),
         robot=spec.robot,

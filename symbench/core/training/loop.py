@@ -264,6 +264,7 @@ def _identity(
     cfg = {k: v for k, v in config.to_dict().items() if k not in budgets}
     return {
         "model": entry.name,
+        "model version": entry.version,
         "backend": entry.backend,
         "variant": entry.variant,
         "dims": dims.to_dict(),
