@@ -17,6 +17,7 @@ from synthetic_raw import fake_simulate
 from symbench.core.config.presets import dataset_id
 from symbench.core.config.provenance import hardware, library_versions
 from symbench.core.data.generation.generate import generate
+from symbench.core.sim.scene.scenario import Scenario
 
 HASH = "ab" * 32
 DEFAULT_EXAMPLES = 50
@@ -151,6 +152,37 @@ def simulated_smoke_hexa(tmp_path_factory):
         del os.environ["SYMBENCH_HOME"]
     else:
         os.environ["SYMBENCH_HOME"] = before
+
+
+# hexa climbs drawn as v7 draws them (yaw, heading, slope and direction continuous, each
+# step's swing its own), short: no two are rotated images of each other
+DRAWN = tuple(
+    Scenario("hexa", slope, heading, yaw, direction, None, seed, 0.4, gait_spread=0.2)
+    for slope, heading, yaw, direction, seed in (
+        (62.5, 31.25, 12.75, 23.5, 3),
+        (118.0, 201.5, 101.25, 291.0, 4),
+        (90.5, 144.0, 247.5, 147.25, 5),
+    )
+)
+
+
+@pytest.fixture(scope="session")
+def drawn_hexa_home(tmp_path_factory):
+    """A private home holding `hexa-drawn`, the DRAWN climbs simulated for real (seconds)."""
+    home = tmp_path_factory.mktemp("drawn") / "home"
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setenv("SYMBENCH_HOME", str(home))
+        generate("hexa", "smoke", show_progress=False, scenarios=DRAWN, id_override="hexa-drawn")
+    return home
+
+
+@pytest.fixture
+def drawn_hexa(drawn_hexa_home, monkeypatch):
+    """`hexa-drawn`, loaded with its home as this test's $SYMBENCH_HOME."""
+    from symbench.core.data.dataset import load_dataset
+
+    monkeypatch.setenv("SYMBENCH_HOME", str(drawn_hexa_home))
+    return load_dataset("hexa-drawn")
 
 
 @pytest.fixture

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
 from types import SimpleNamespace
 
 from symbench.core.data import load_dataset
@@ -14,21 +15,26 @@ def test_it_reports_what_data_symmetry_measures(smoke_hexa):
     report = dataset_symmetry(dataset)
     out = data_symmetry.evaluate(SimpleNamespace(dataset=dataset))
     assert out["image_pairs"] == len(report.pairs) == 2  # yaw 180 is an image of yaw 0
+    assert out["pairs"] == "found"
     for key, group in (("tau", "torques"), ("joint", "joint states"), ("base", "base")):
         assert out[f"{key}_rel_error"] == report.groups[group]["relative_error"]
         assert out[f"{key}_ratio_to_floor"] == report.groups[group]["ratio"]
 
 
-def test_a_dataset_without_image_climbs_says_so(smoke_hexa, monkeypatch):
-    dataset = load_dataset(smoke_hexa.dataset_id)
-    empty = dataset_symmetry(dataset)
-    empty.pairs = []
-    monkeypatch.setattr(data_symmetry, "dataset_symmetry", lambda _: empty)
-    out = data_symmetry.evaluate(SimpleNamespace(dataset=dataset))
+def test_a_generated_dataset_without_image_climbs_gets_constructed_pairs(drawn_hexa):
+    out = data_symmetry.evaluate(SimpleNamespace(dataset=drawn_hexa))
+    assert out["pairs"] == "constructed" and out["twins"] == out["image_pairs"] == 3
+    for key in ("tau", "joint", "base"):
+        assert out[f"{key}_rel_error"] < 1e-6  # hexa is symmetric: its twins are exact
+
+
+def test_an_imported_dataset_without_image_climbs_says_so(drawn_hexa):
+    imported = replace(drawn_hexa, metadata={**drawn_hexa.metadata, "source": "imported"})
+    out = data_symmetry.evaluate(SimpleNamespace(dataset=imported))
     assert out == {
         "image_pairs": 0,
-        "floor": empty.floor_source,
-        "reason": "no two climbs of the dataset are rotated images of each other",
+        "reason": "no two climbs of the dataset are rotated images of each other, and an "
+        "imported dataset cannot be simulated again to construct some",
     }
 
 

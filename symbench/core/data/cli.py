@@ -289,27 +289,44 @@ def export_command(dataset_id: str, folder: Path, fmt: str) -> None:
     default=None,
     help="Folder for the plot symmetry-<ID>.png (default: symmetry.png in the dataset's folder).",
 )
+@click.option(
+    "--twins",
+    type=click.IntRange(min=1),
+    default=None,
+    help="Construct N image pairs instead of finding them: N climbs of a generated dataset "
+    "simulated again, turned by one symmetry step (cached as dataset ID-twinsN).",
+)
 @click.option("--json", "as_json", is_flag=True, help="Print JSON (every pair and column).")
-def symmetry_command(dataset_id: str, output: Path | None, as_json: bool) -> None:
+def symmetry_command(
+    dataset_id: str, output: Path | None, twins: int | None, as_json: bool
+) -> None:
     """How symmetric a dataset is: trajectories that are images of each other under the
     robot's group, compared after relabelling, against a noise floor."""
     from rich.markup import escape
 
     from symbench.core.data.dataset import load_dataset
+    from symbench.core.data.storage.metadata import dataset_dir
     from symbench.core.data.symmetry.pairing import READING_NAMES
     from symbench.core.data.symmetry.plot import PLOT_NAME, symmetry_png
     from symbench.core.data.symmetry.report import dataset_symmetry
+    from symbench.core.data.symmetry.twins import twin_symmetry
 
     dataset = load_dataset(dataset_id)
-    report = dataset_symmetry(dataset)
-    plot = output / f"symmetry-{dataset_id}.png" if output else dataset.root / PLOT_NAME
+    if twins is None:
+        report = dataset_symmetry(dataset)
+    else:
+        report = twin_symmetry(dataset, twins, show_progress=not as_json)
+    name = report.dataset  # the derived dataset of constructed pairs, if any
+    plot = output / f"symmetry-{name}.png" if output else dataset_dir(name) / PLOT_NAME
     report.plot = str(symmetry_png(report, plot))
     if as_json:
         click.echo(json.dumps(report.to_dict(), indent=2))
         return
+    if report.constructed is not None:
+        console.print(report.constructed.sentence(), soft_wrap=True, markup=False)
     elements = sorted({p.element.name for p in report.pairs})
     console.print(
-        f"[bold]{escape(dataset_id)}[/] (robot {report.robot}, group {report.group}): "
+        f"[bold]{escape(name)}[/] (robot {report.robot}, group {report.group}): "
         f"{len(report.pairs)} image pairs among {report.trajectories} trajectories "
         f"({', '.join(elements)}); noise floor from {report.floor_source}"
         + (f" ({report.repeats} repeat pairs)" if report.floor_source == "repeats" else "")

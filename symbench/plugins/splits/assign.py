@@ -134,7 +134,10 @@ def orbit_rotation(context: SplitContext) -> np.ndarray:
             raise SymbenchError(
                 f"dataset {context.dataset_id}: orbit-rotation needs climbs that are exact "
                 f"rotated images of climbs in [0, {width:g}) degrees (a yaw grid, datasets "
-                "up to v6); this one has none (continuous draws): use unseen-rotation"
+                "up to v6); this one has none (continuous draws): use unseen-rotation to "
+                "test generalization to other rotations, and `symbench data symmetry "
+                f"{context.dataset_id} --twins N` to measure the data's symmetry on pairs "
+                "constructed on purpose"
             )
         labels[~inside & ~images] = "unused"
     return carve_validation(labels, context)

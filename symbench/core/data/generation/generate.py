@@ -167,10 +167,13 @@ def generate(
     show_progress: bool = True,
     scenarios: Sequence[Scenario] | None = None,
     id_override: str | None = None,
+    repair_command: str | None = None,
 ) -> GenerationReport:
     """Generate (or resume) the dataset of `preset_name` for `robot` in the cache.
 
-    `scenarios` and `id_override` replace the preset's grid and id (tests use tiny grids).
+    `scenarios` and `id_override` replace the preset's grid and id (tests use tiny grids;
+    `symbench data symmetry --twins` its constructed pairs, which name their own
+    `repair_command`).
     The real simulator runs in spawned worker processes with pinned numerics (see
     symbench.core.data.generation.determinism), even for workers=1 unless this process is pinned: a
     script calling this needs the usual `if __name__ == "__main__":` guard.
@@ -242,6 +245,7 @@ def generate(
         key,
         grid_doc,
         [records[i] for i in range(len(tasks))],
+        repair_command or f"symbench data generate --robot {robot} --preset {grid.name}",
     )
     return GenerationReport(
         did,
@@ -265,6 +269,7 @@ def _write_dataset(
     key: dict[str, Any],
     grid_doc: dict[str, Any],
     records: list[dict[str, Any]],
+    repair_command: str,
 ) -> dict[str, Any]:
     """metadata.json from the records in grid order: kept trajectories, then failures."""
     ok = [
@@ -292,7 +297,7 @@ def _write_dataset(
             "failures": failures,
             "n_samples": sum(r["n_steps"] - 1 for r in ok),
             # hashed with the rest, so an earlier version's dataset keeps its name, not its key
-            "repair_command": f"symbench data generate --robot {robot} --preset {preset_name}",
+            "repair_command": repair_command,
         },
     )
 

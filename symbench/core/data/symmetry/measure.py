@@ -27,6 +27,7 @@ from symbench.core.data.symmetry.raw_action import act_on_raw
 from symbench.core.data.symmetry.report import (
     FLAGS,
     GROUPS,
+    NoImagePairsError,
     Pair,
     SymmetryReport,
     verdict,
@@ -76,7 +77,7 @@ def measure(
     pairing = pair_up(scenarios, ids, group, frames, reading, spec)
     images, repeats = pairing.images, pairing.repeats
     if not images:
-        raise SymbenchError(
+        raise NoImagePairsError(
             f"dataset '{name}' has no pair of trajectories that are images of each other "
             f"under {group.name}: no two scenarios are equal but for yaws a multiple of "
             f"{360 / group.rotation_order:g} degrees apart (with the direction turned and "

@@ -67,8 +67,10 @@ def scenario_gait_of(
     yaw = scenario.get("yaw_deg")
     if yaw is None:
         return None
-    name = scenario.get("direction")
-    direction = None if name is None else DIRECTIONS[name]
+    named = scenario.get("direction")  # a name, or degrees (climbs drawn continuously)
+    direction = (
+        None if named is None else DIRECTIONS[named] if isinstance(named, str) else float(named)
+    )
     order = scenario.get("leg_order")
     order = None if order is None else tuple(int(leg) for leg in order)
     if reading == "recorded":

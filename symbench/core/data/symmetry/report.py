@@ -57,17 +57,27 @@ symmetric (a generated dataset); one whose error is below an informative floor i
 within its noise; anything above is a measurable asymmetry, reported as the ratio
 error / floor.
 
-The pieces: `pairing.py` finds the image and repeat pairs, `measure.py` compares them
-against the floor, `plot.py` draws the figure; this module holds the report itself.
+**Constructed pairs.** A dataset of climbs drawn from continuous distributions (v7) holds
+no image pairs. With `--twins N` the pairs are made on purpose instead (`twins.py`): N of a
+generated dataset's climbs simulated again beside twins turned by one symmetry step, and
+the report says so (`constructed`).
+
+The pieces: `pairing.py` finds the image and repeat pairs, `twins.py` constructs them,
+`measure.py` compares them against the floor, `plot.py` draws the figure; this module holds
+the report itself.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
+from symbench.core.common.errors import SymbenchError
 from symbench.core.data.symmetry.alignment import Alignment
 from symbench.core.symmetry.groups import GroupElement
+
+if TYPE_CHECKING:
+    from symbench.core.data.symmetry.twins import Twins
 
 GROUPS: dict[str, tuple[str, ...]] = {
     "joint states": ("q", "qd", "qdd"),
@@ -76,6 +86,10 @@ GROUPS: dict[str, tuple[str, ...]] = {
 }
 FLAGS = ("contact", "magnet")
 FLOAT_PRECISION = 1e-6  # relative error below this: symmetric up to rounding
+
+
+class NoImagePairsError(SymbenchError):
+    """No two trajectories of the dataset are images of each other: nothing to measure."""
 
 
 @dataclass(frozen=True)
@@ -106,6 +120,7 @@ class SymmetryReport:
     reading: str = "recorded"  # how the scenarios were read: "simulator" or "recorded"
     repeat_alignments: list[tuple[int, int, Alignment]] = field(default_factory=list)
     floor_note: str | None = None  # why the floor from repeats tells nothing, when it does not
+    constructed: Twins | None = None  # how the pairs were made, when not found (`twins.py`)
 
     @property
     def unaligned(self) -> list[Pair]:
@@ -119,6 +134,8 @@ class SymmetryReport:
             "trajectories": self.trajectories,
             "scenario_reading": self.reading,
             "image_pairs": len(self.pairs),
+            "image_pairs_were": "found" if self.constructed is None else "constructed",
+            "constructed": None if self.constructed is None else self.constructed.to_dict(),
             "repeat_pairs": self.repeats,
             "floor": self.floor_source,
             "floor_note": self.floor_note,
@@ -159,7 +176,8 @@ def verdict(relative_error: float, relative_floor: float, uninformative: str | N
 def dataset_symmetry(dataset: Any) -> SymmetryReport:
     """The symmetry report of `dataset`, a loaded `Dataset` (its robot's group and leg
     frames): what `symbench data symmetry` prints. A generated dataset's scenarios are read
-    as the simulator's input, an imported one's as recorded (see `pair_up`)."""
+    as the simulator's input, an imported one's as recorded (see `pair_up`). Without image
+    pairs: a `NoImagePairsError`, which for a generated dataset names `--twins`."""
     from symbench.core.data.storage.files import read_trajectory
     from symbench.core.data.symmetry.measure import measure
 
@@ -170,14 +188,22 @@ def dataset_symmetry(dataset: Any) -> SymmetryReport:
     }
     unknown = dataset.metadata.get("unknown_columns") or ()
     imported = dataset.metadata.get("source") == "imported"
-    return measure(
-        trajectories,
-        dataset.scenarios,
-        spec.group,
-        dataset.frames,
-        dataset.id,
-        dataset.robot,
-        unknown,
-        reading="auto" if imported else "simulator",
-        spec=spec,
-    )
+    try:
+        return measure(
+            trajectories,
+            dataset.scenarios,
+            spec.group,
+            dataset.frames,
+            dataset.id,
+            dataset.robot,
+            unknown,
+            reading="auto" if imported else "simulator",
+            spec=spec,
+        )
+    except NoImagePairsError as exc:
+        if imported:
+            raise
+        raise NoImagePairsError(
+            f"{exc}; `symbench data symmetry {dataset.id} --twins N` constructs N pairs by "
+            "simulating N of its climbs again, turned by one symmetry step"
+        ) from None
