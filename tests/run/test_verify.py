@@ -20,7 +20,7 @@ from symbench.core.plugin import registry
 from symbench.core.runs import runner
 from symbench.core.runs.results import read_record, write_record
 from symbench.core.runs.runner import RunSpec, run
-from symbench.core.runs.verify import Tolerance, sample
+from symbench.core.runs.verify import Tolerance, kernel_class_warning, sample
 
 SMOKE = ("smoke",)
 
@@ -170,8 +170,9 @@ def test_a_record_of_another_dataset_version_is_not_re_run(records, tmp_path):
 
 def test_a_caller_on_other_torch_kernels_still_reproduces_the_record(records, smoke_home):
     """symbench holds torch to its AVX2 kernels whatever the caller's environment says, so a
-    maintainer on another CPU reproduces the record (unpinned, these variables change 11 of
-    14 values of such a record)."""
+    maintainer whose environment says otherwise reproduces the record (unpinned, these
+    variables change 11 of 14 values of such a record), and is not warned: the record names
+    the same kernel class."""
     import os
     import subprocess
     import sys
@@ -207,3 +208,34 @@ def test_a_record_of_another_model_version_is_refused_not_re_run(records, tmp_pa
     assert result.exit_code == 1
     expected = f"made with sdnn (torch) version {here + 1}, but this code builds version {here}"
     assert expected in " ".join(result.output.split())
+
+
+def test_a_record_names_its_kernel_class_and_verify_warns_across_classes(records, tmp_path):
+    """The record keeps the kernel class it was trained in; a record of another class (or,
+    made before classes were recorded, on a CPU of the other vendor) gets a warning that only
+    a tolerance can be asked for, and is still re-run and compared."""
+    from symbench.core.training.kernels import training_kernels
+
+    here = training_kernels("torch")
+    record = read_record(records[0])
+    assert record.hardware["training_kernels"] == here
+    assert "aten avx2" in here and "1 thread(s)" in here
+    intel = "GenuineIntel" in here
+    assert ("mkl avx2 strict" in here) == intel  # MKL's AVX2 branch exists on Intel only
+    assert kernel_class_warning(record) is None
+
+    data = json.loads(records[0].read_text())
+    data["hardware"]["training_kernels"] = "torch 2.13.0+cpu: aten avx2, mkl auto (avx2)"
+    write_record(data, tmp_path / "other-class.json")
+    warning = kernel_class_warning(read_record(tmp_path / "other-class.json"))
+    assert warning and "mkl auto (avx2)" in warning and here in warning
+    result = verify(str(tmp_path / "other-class.json"))
+    assert result.exit_code == 0 and "agreement within a tolerance only" in result.stderr
+
+    del data["hardware"]["training_kernels"]
+    data["hardware"]["cpu"] = "AMD EPYC" if intel else "Intel(R) Xeon(R) Processor"
+    write_record(data, tmp_path / "older.json")
+    assert "unrecorded, on" in (kernel_class_warning(read_record(tmp_path / "older.json")) or "")
+    data["hardware"]["cpu"] = "Intel(R) Xeon(R) Processor" if intel else "AMD EPYC"
+    write_record(data, tmp_path / "older-same-vendor.json")
+    assert kernel_class_warning(read_record(tmp_path / "older-same-vendor.json")) is None

@@ -40,6 +40,7 @@ from symbench.core.runs.results import (
 from symbench.core.runs.run_config import check_names, recorded_config, train_config
 from symbench.core.runs.spec import RunSpec, checkpoint_root, ensure_dataset, model_entry
 from symbench.core.runs.trainings import RunTrainings, Sets, Timer
+from symbench.core.training.kernels import training_kernels
 from symbench.core.training.loop import batches_per_epoch
 from symbench.core.training.resume import BEST_DIR
 from symbench.core.training.trained_model import TrainedModel
@@ -158,7 +159,7 @@ def record_body(
         ),
         metrics=metrics,
         timings_s=timings,
-        hardware=hardware(),
+        hardware={**hardware(), "training_kernels": training_kernels(entry.backend)},
         versions=library_versions(),
         git_commit=git_commit(),
     )

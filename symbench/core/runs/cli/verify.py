@@ -11,7 +11,16 @@ from rich.table import Table
 
 from symbench.core.common.cli_types import NON_NEGATIVE, WORKERS
 from symbench.core.common.console import StdoutConsole
-from symbench.core.runs.verify import ATOL, RTOL, Tolerance, Verification, verify_record
+from symbench.core.common.errors import SymbenchError
+from symbench.core.runs.results import read_record
+from symbench.core.runs.verify import (
+    ATOL,
+    RTOL,
+    Tolerance,
+    Verification,
+    kernel_class_warning,
+    verify_record,
+)
 
 
 def _table(result: Verification) -> Table:
@@ -59,6 +68,13 @@ def verify(
         click.echo(
             f"warning: {problem}; training may not reproduce records made elsewhere", err=True
         )
+    for path in records:
+        try:
+            warning = kernel_class_warning(read_record(path))
+        except SymbenchError:
+            continue  # verify_record names the problem
+        if warning:
+            click.echo(f"warning: {warning}", err=True)
     with tempfile.TemporaryDirectory(prefix="symbench-verify-") as workdir:
         results = [verify_record(path, Path(workdir), tolerance, workers) for path in records]
     if as_json:
