@@ -11,9 +11,10 @@ only leaves room for reduction-order noise, never for another model. Where those
 cannot be held (no AVX2, torch imported before symbench, another thread count, a record of
 another kernel class: the command warns, `kernel_class_warning`) float32 training changes
 in its last bits and the metrics with it: pass a looser tolerance there, and say so.
-Numbers and booleans are compared; text (file paths, failure descriptions) is not. A value the record lacks but
-today's evaluator reports (a metric added since the record was made) is listed as not
-recorded and does not fail the check; a recorded value that the re-run lacks does.
+Numbers and booleans are compared; text (file paths, failure descriptions) is not. A value
+the record lacks but today's evaluator reports (a metric added since the record was made)
+is listed as not recorded and does not fail the check; a recorded value that the re-run
+lacks does.
 """
 
 from __future__ import annotations
