@@ -1,18 +1,22 @@
-"""`symbench bench models`: FLOP counts that add up, and a report with every figure."""
+"""`symbench bench models`: FLOP counts that add up, and a report whose every share of the
+matmul rate divides by the best rate measured with the same threads."""
 
 from __future__ import annotations
 
 import json
+import os
 
 import pytest
 import torch
 from click.testing import CliRunner
 
 from symbench.core.bench.flops import step_flops_per_sample
+from symbench.core.bench.threads import ThreadCounts
 from symbench.core.cli import build_cli
 from symbench.core.data.views.model_dims import dims_for
 from symbench.core.plugin import registry
 from symbench.core.training.backends.torch_backend import build_network
+from symbench.core.training.kernels import TORCH_PINS, XLA_PIN
 
 BATCH = 8
 
@@ -38,20 +42,80 @@ def test_both_backends_count_nearly_the_same_flops(name):
     assert by_torch > 0 and abs(by_jax - by_torch) / by_torch < 0.1
 
 
-def test_the_report_has_rates_and_the_fraction_of_the_matmul_limit():
+def test_the_report_of_both_thread_settings():
+    """One short run (each setting a child process; one model, so it stays short), checked
+    for every property the report promises."""
     args = ["bench", "models", "--models", "ffnn", "--seconds", "0.05", "--json"]
     result = CliRunner().invoke(build_cli(), args)
     assert result.exit_code == 0, result.output
     report = json.loads(result.stdout)
-    assert [(r["model"], r["backend"]) for r in report["rows"]] == [
-        ("ffnn", "torch"),
-        ("ffnn", "jax"),
-    ]
-    for row in report["rows"]:
+    _each_setting_ran_with_the_threads_it_states(report["settings"])
+    for setting in report["settings"]:
+        _every_share_divides_by_the_best_matmul_rate_of_its_setting(setting)
+        _the_matmul_rates_are_those_of_the_training_kernels(setting)
+    _latency_is_measured_with_the_fewest_threads_only(report["settings"])
+    assert "1 thread: [2/2] ffnn/jax: training, compiled" in result.stderr
+
+
+def _each_setting_ran_with_the_threads_it_states(settings):
+    """One thread and every core this process may use (one setting on a single core), and
+    each child computed with exactly that many: torch's threads, XLA's pool threads."""
+    assert [s["threads"] for s in settings] == sorted({1, len(os.sched_getaffinity(0))})
+    for setting in settings:
+        n = setting["threads"]
+        assert len(setting["cores"]) == n
+        assert setting["threads_used"] == {"torch": n, "jax": n}
+
+
+def _every_share_divides_by_the_best_matmul_rate_of_its_setting(setting):
+    matmul = setting["matmul_flops_per_s"]
+    assert set(matmul) == {"torch", "jax"} and min(matmul.values()) > 0
+    best = max(matmul.values())
+    assert matmul[setting["best_matmul_backend"]] == best
+    rows = setting["rows"]
+    assert [(r["model"], r["backend"]) for r in rows] == [("ffnn", "torch"), ("ffnn", "jax")]
+    for row in rows:
         mode = row["train_best"]
         assert mode == ("plain" if row["backend"] == "torch" else "compiled")
         rate = row[f"train_samples_per_s_{mode}"]
         assert row["train_flops_per_s"] == pytest.approx(rate * row["train_flops_per_sample"])
-        fraction = row["train_flops_per_s"] / row["matmul_flops_per_s"]
-        assert row["train_matmul_fraction"] == pytest.approx(fraction) and 0 < fraction < 2
-    assert "[2/2] ffnn/jax: training, compiled" in result.stderr
+        own = row["train_flops_per_s"] / matmul[row["backend"]]
+        assert row["share_of_own_matmul"] == pytest.approx(own)
+        assert row["share_of_best_matmul"] == pytest.approx(row["train_flops_per_s"] / best)
+        assert 0 < row["share_of_best_matmul"] <= row["share_of_own_matmul"] < 2
+
+
+def _the_matmul_rates_are_those_of_the_training_kernels(setting):
+    """The children run under the pins training runs under (this CPU has AVX2)."""
+    pins = setting["kernel_pins"]
+    assert {k: pins[k] for k in TORCH_PINS} == TORCH_PINS
+    assert pins["torch_cpu_capability"] == "AVX2" and XLA_PIN in pins["XLA_FLAGS"]
+
+
+def _latency_is_measured_with_the_fewest_threads_only(settings):
+    first, *others = settings
+    assert first["latency_measured"]
+    assert all(r[f"infer_batch1_us_{r['infer_best']}"] > 0 for r in first["rows"])
+    for setting in others:
+        assert not setting["latency_measured"]
+        assert not any(key.startswith("infer") for r in setting["rows"] for key in r)
+
+
+@pytest.mark.parametrize(
+    ("threads", "message"),
+    [
+        ("0", "0 threads: a setting needs at least 1"),
+        ("abc", "'abc' is neither a number of threads nor 'all'"),
+        (",", "',' names nothing"),
+        ("4096", "4096 threads: this process may use only"),
+    ],
+)
+def test_a_bad_thread_setting_is_refused_before_any_work(threads, message):
+    result = CliRunner().invoke(build_cli(), ["bench", "models", "--threads", threads])
+    assert result.exit_code == 2 and message in result.stderr, result.output
+
+
+def test_thread_settings_are_sorted_and_name_each_count_once():
+    cores = len(os.sched_getaffinity(0))
+    assert ThreadCounts().convert("all,1", None, None) == sorted({1, cores})
+    assert ThreadCounts().convert(f"{cores}, all,", None, None) == [cores]

@@ -1,9 +1,9 @@
 """How close a training step comes to the CPU's limit: the model's own FLOPs per sample and
-the machine's dense-matmul rate, each measured by the backend that trains the model.
+each backend's dense-matmul rate, the best of which is the limit (see `bench.models`).
 
 A samples/s figure alone says nothing about headroom; samples/s x FLOPs per sample over the
-matmul rate measured in the same run does (1.0 would be a step made of nothing but large
-matmuls running at the BLAS's best). FLOPs are counted the usual way, 2 per multiply-add:
+best matmul rate measured in the same process does (1.0 would be a step made of nothing but
+large matmuls running at the best BLAS's best). FLOPs are counted the usual way, 2 per multiply-add:
 torch's FlopCounterMode counts matmuls and convolutions of the forward and backward pass;
 XLA's cost analysis of the jitted gradient counts every operation. The two agree closely for
 these networks, whose FLOPs are almost all matmuls.

@@ -1,99 +1,39 @@
 """`symbench bench models`: training throughput (batch 64), how close it comes to the CPU's
-matmul limit, and batch-1 inference latency.
+matmul limit, and batch-1 inference latency, per thread setting.
 
 Every model in both backends, on synthetic data shaped like the robot's, in each backend's
 default mode, or (`--modes both`) uncompiled and compiled side by side (torch.compile; JAX:
 one jitted call per step vs one jitted scan per epoch for training, eager vs jit for
 inference), so the table shows which wins.
+
+The limit is one honest denominator per thread setting: the best dense-matmul rate either
+backend reaches with that setting's cores, measured in the same process as the rows (see
+`models_worker`). One thread is how a sweep runs each job, all cores how `symbench run`
+trains. Batch-1 latency is measured in the setting with the fewest threads only: a batch-1
+call's matrices are far too small to split among threads, so a second figure would cost a
+timing window per row and mode and say nothing new.
 """
 
 from __future__ import annotations
 
 import json
-import statistics
+import os
 import time
 from typing import Any
 
 import click
-import numpy as np
-from rich.console import Console
+from rich.console import Group
 from rich.table import Table
 
-from symbench.core.bench.flops import MATMUL_SIZE, matmul_flops_per_s, step_flops_per_sample
+from symbench.core.bench.model_rates import BATCH
+from symbench.core.bench.models_worker import measure_in_child
+from symbench.core.bench.threads import ThreadCounts
 from symbench.core.common.cli_types import POSITIVE
 from symbench.core.common.console import StdoutConsole
-from symbench.core.data.views.model_dims import dims_of
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import BACKENDS
-from symbench.core.training.backends import get_backend
-from symbench.core.training.normalization import Normalizer
 
-BATCH = 64
-
-
-def train_rate(entry, views, compiled: bool, seconds: float) -> float:
-    """Samples per second of the training step at batch 64, after a warm-up epoch."""
-    data = views[entry.view]
-    backend = get_backend(entry.backend)
-    dims = dims_of(data)
-    trainer = backend.make_trainer(
-        entry, dims, {}, backend.init_params(entry, dims, {}, 0), entry.learning_rate, compiled
-    )
-    trainer.set_data(data.inputs, data.target, data.inputs, data.target)
-    n_batches = len(data) // BATCH
-    order = np.arange(n_batches * BATCH).reshape(n_batches, BATCH)
-    trainer.train_epoch(order)  # compiles
-    done, start = 0, time.perf_counter()
-    while time.perf_counter() - start < seconds:
-        trainer.train_epoch(order)
-        done += n_batches * BATCH
-    return done / (time.perf_counter() - start)
-
-
-def latency_us(entry, views, compiled: bool, seconds: float) -> float:
-    """Median wall time of one batch-1 prediction (normalization included), microseconds."""
-    data = views[entry.view]
-    backend = get_backend(entry.backend)
-    dims = dims_of(data)
-    predict = backend.make_predictor(
-        entry,
-        dims,
-        {},
-        backend.init_params(entry, dims, {}, 0),
-        Normalizer.fit(data),
-        np.float32,
-        compiled,
-    )
-    one = {k: v[:1].astype(np.float32) for k, v in data.inputs.items()}
-    for _ in range(20):
-        predict(one)
-    times: list[float] = []
-    start = time.perf_counter()
-    while time.perf_counter() - start < seconds or len(times) < 50:
-        t = time.perf_counter()
-        predict(one)
-        times.append(time.perf_counter() - t)
-    return 1e6 * statistics.median(times)
-
-
-def measure(entry, views, seconds: float, modes: tuple[bool, ...], say) -> dict[str, Any]:
-    """One row: training rate and latency in each mode, and how close training comes to the
-    backend's matmul limit (its best mode's samples/s x FLOPs per sample / matmul rate)."""
-    row: dict[str, Any] = {"model": entry.name, "backend": entry.backend}
-    for compiled in modes:
-        mode = "compiled" if compiled else "plain"
-        say(f"training, {mode}")
-        row[f"train_samples_per_s_{mode}"] = train_rate(entry, views, compiled, seconds)
-        say(f"batch-1 inference, {mode}")
-        row[f"infer_batch1_us_{mode}"] = latency_us(entry, views, compiled, seconds)
-    names = ["compiled" if c else "plain" for c in modes]
-    row["train_best"] = max(names, key=lambda m: row[f"train_samples_per_s_{m}"])
-    row["infer_best"] = min(names, key=lambda m: row[f"infer_batch1_us_{m}"])
-    say("counting FLOPs")
-    flops = step_flops_per_sample(entry, dims_of(views[entry.view]), BATCH)
-    row["train_flops_per_sample"] = flops
-    row["train_flops_per_s"] = flops * row[f"train_samples_per_s_{row['train_best']}"]
-    return row
+MODES = ("plain", "compiled")
 
 
 @click.command("models")
@@ -115,83 +55,103 @@ def measure(entry, views, seconds: float, modes: tuple[bool, ...], say) -> dict[
     "compiled side by side (torch.compile adds tens of seconds per model).",
 )
 @click.option(
+    "--threads",
+    "thread_counts",
+    type=ThreadCounts(),
+    default="1,all",
+    show_default=True,
+    help="Comma-separated thread settings, each measured in a process of its own on that "
+    "many cores: a number, or 'all' (every core this process may use).",
+)
+@click.option(
     "--seconds", default=1.0, show_default=True, type=POSITIVE, help="Timing window per figure."
 )
 @click.option("--json", "as_json", is_flag=True, help="Print JSON instead of a table.")
 def bench_models(
-    robot_name: str, names: str, backends: str, modes: str, seconds: float, as_json: bool
+    robot_name: str,
+    names: str,
+    backends: str,
+    modes: str,
+    thread_counts: list[int],
+    seconds: float,
+    as_json: bool,
 ) -> None:
-    """Training samples/s (batch 64), the fraction of the CPU's matmul rate that training
-    reaches, and batch-1 inference latency, per model and backend. Progress goes to stderr."""
-    import os
-
+    """Training samples/s (batch 64), its share of the best matmul rate either backend
+    reaches with the same threads, and batch-1 inference latency, per model, backend and
+    thread setting. Progress goes to stderr."""
     from symbench.core.robot.specs import load_robot
-    from symbench.testing.synthetic import synthetic_views
 
-    robot = load_robot(robot_name)
-    # every torch figure before JAX starts: XLA's idle CPU threads would compete with torch's
-    entries = [
-        registry.model(n.strip(), b.strip()) for b in backends.split(",") for n in names.split(",")
-    ]
-    views = synthetic_views(robot.n_legs, 64 * BATCH, seed=0)
-    progress = Console(stderr=True)
+    load_robot(robot_name)
+    models = [n.strip() for n in names.split(",")]
+    chosen = [b.strip() for b in backends.split(",")]
+    for backend in chosen:
+        for name in models:
+            registry.model(name, backend)  # an unknown name fails here, before any child
     started = time.perf_counter()
-    rows = []
-    for i, entry in enumerate(entries, start=1):
+    settings = []
+    for count in thread_counts:
+        job = {
+            "robot": robot_name,
+            "models": models,
+            "backends": chosen,
+            "modes": modes,
+            "seconds": seconds,
+            "threads": count,
+            "latency": count == thread_counts[0],
+        }
+        label = _count(count, "thread")
 
-        def say(what: str, i: int = i, entry=entry) -> None:
-            elapsed = time.perf_counter() - started
-            progress.print(
-                f"[{i}/{len(entries)}] {entry.name}/{entry.backend}: {what} ({elapsed:.0f} s)"
-            )
+        def relay(line: str, label: str = label) -> None:
+            click.echo(f"{label}: {line}", err=True)
 
-        backend_modes = (
-            (False, True) if modes == "both" else (get_backend(entry.backend).default_compiled,)
-        )
-        rows.append(measure(entry, views, seconds, backend_modes, say))
-    matmul = {}
-    for backend in sorted({r["backend"] for r in rows}):
-        progress.print(f"{backend}: dense matmul rate ({MATMUL_SIZE}x{MATMUL_SIZE}, float32)")
-        matmul[backend] = matmul_flops_per_s(backend, seconds)
-    for r in rows:
-        r["matmul_flops_per_s"] = matmul[r["backend"]]
-        r["train_matmul_fraction"] = r["train_flops_per_s"] / matmul[r["backend"]]
+        settings.append(measure_in_child(job, relay))
     report = {
         "robot": robot_name,
         "batch": BATCH,
         "cpu_count": os.cpu_count(),
         "seconds_per_figure": seconds,
         "seconds_total": round(time.perf_counter() - started, 1),
-        "rows": rows,
+        "settings": settings,
     }
     if as_json:
         click.echo(json.dumps(report, indent=2))
         return
-    StdoutConsole().print(_table(report))
+    StdoutConsole().print(Group(*(_table(robot_name, s) for s in settings)))
 
 
-def _table(report: dict[str, Any]) -> Table:
-    rows = report["rows"]
-    modes = [m for m in ("plain", "compiled") if any(f"train_samples_per_s_{m}" in r for r in rows)]
-    table = Table(title=f"symbench bench models ({report['robot']}, {report['cpu_count']} CPUs)")
-    columns = ["model", "backend"]
-    columns += [f"train/s {m}" for m in modes] + ["GFLOP/sample", "of matmul peak"]
-    columns += [f"infer us {m}" for m in modes]
+def _table(robot: str, setting: dict[str, Any]) -> Table:
+    """One setting's block: its threads and matmul rates above and below, a row per model
+    and backend (each row's share of its own backend's rate is in the JSON)."""
+    rows = setting["rows"]
+    modes = [m for m in MODES if any(f"train_samples_per_s_{m}" in r for r in rows)]
+    latency = setting["latency_measured"]
+    used = ", ".join(f"{b} {_count(n, 'thread')}" for b, n in setting["threads_used"].items())
+    rates = ", ".join(f"{b} {r / 1e9:,.0f}" for b, r in setting["matmul_flops_per_s"].items())
+    table = Table(
+        title=f"bench models, {robot}: {_count(setting['threads'], 'core')} ({used})",
+        caption=f"matmul GFLOP/s: {rates}; best: {setting['best_matmul_backend']}",
+    )
+    columns = ["model", "backend", *(f"train/s {m}" for m in modes)]
+    columns += ["GFLOP/sample", "of best matmul"]
+    columns += [f"infer us {m}" for m in modes] if latency else []
     for col in columns:
         table.add_column(col, justify="right")
     for r in rows:
-        table.add_row(
-            r["model"],
-            r["backend"],
-            *(
-                _figure(r, f"train_samples_per_s_{m}", "{:,.0f}", r["train_best"] == m)
-                for m in modes
-            ),
-            f"{r['train_flops_per_sample'] / 1e9:.2e}",
-            f"{r['train_matmul_fraction']:.1%}",
-            *(_figure(r, f"infer_batch1_us_{m}", "{:.1f}", r["infer_best"] == m) for m in modes),
-        )
+        cells = [r["model"], r["backend"]]
+        cells += [
+            _figure(r, f"train_samples_per_s_{m}", "{:,.0f}", r["train_best"] == m) for m in modes
+        ]
+        cells += [f"{r['train_flops_per_sample'] / 1e9:.2e}", f"{r['share_of_best_matmul']:.1%}"]
+        if latency:
+            cells += [
+                _figure(r, f"infer_batch1_us_{m}", "{:.1f}", r["infer_best"] == m) for m in modes
+            ]
+        table.add_row(*cells)
     return table
+
+
+def _count(n: int, noun: str) -> str:
+    return f"{n} {noun}{'' if n == 1 else 's'}"
 
 
 def _figure(row: dict[str, Any], key: str, fmt: str, best: bool) -> str:

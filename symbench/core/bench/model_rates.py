@@ -1,0 +1,167 @@
+"""The figures of one thread setting of `symbench bench models`, taken in the process that
+`threads.confine` confined: every row (training rate, batch-1 latency, FLOPs) and both
+backends' dense-matmul rates, so that each row's share of the best matmul rate compares
+figures computed with the same cores.
+
+Every torch figure comes before JAX loads (XLA's idle CPU threads would compete with
+torch's); both matmul rates are measured whichever backends the rows use, since the
+denominator is the best either backend reaches.
+"""
+
+from __future__ import annotations
+
+import os
+import statistics
+import time
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+from symbench.core.bench.flops import MATMUL_SIZE, matmul_flops_per_s, step_flops_per_sample
+from symbench.core.bench.threads import XLA_POOL_THREAD, threads_named
+from symbench.core.data.views.model_dims import dims_of
+from symbench.core.plugin import registry
+from symbench.core.plugin.entries import BACKENDS
+from symbench.core.training.backends import get_backend
+from symbench.core.training.kernels import TORCH_PINS
+from symbench.core.training.normalization import Normalizer
+
+BATCH = 64
+
+Say = Callable[[str], None]
+
+
+def train_rate(entry, views, compiled: bool, seconds: float) -> float:
+    """Samples per second of the training step at batch 64, after a warm-up epoch."""
+    data = views[entry.view]
+    backend = get_backend(entry.backend)
+    dims = dims_of(data)
+    trainer = backend.make_trainer(
+        entry, dims, {}, backend.init_params(entry, dims, {}, 0), entry.learning_rate, compiled
+    )
+    trainer.set_data(data.inputs, data.target, data.inputs, data.target)
+    n_batches = len(data) // BATCH
+    order = np.arange(n_batches * BATCH).reshape(n_batches, BATCH)
+    trainer.train_epoch(order)  # compiles
+    done, start = 0, time.perf_counter()
+    while time.perf_counter() - start < seconds:
+        trainer.train_epoch(order)
+        done += n_batches * BATCH
+    return done / (time.perf_counter() - start)
+
+
+def latency_us(entry, views, compiled: bool, seconds: float) -> float:
+    """Median wall time of one batch-1 prediction (normalization included), microseconds."""
+    data = views[entry.view]
+    backend = get_backend(entry.backend)
+    dims = dims_of(data)
+    predict = backend.make_predictor(
+        entry,
+        dims,
+        {},
+        backend.init_params(entry, dims, {}, 0),
+        Normalizer.fit(data),
+        np.float32,
+        compiled,
+    )
+    one = {k: v[:1].astype(np.float32) for k, v in data.inputs.items()}
+    for _ in range(20):
+        predict(one)
+    times: list[float] = []
+    start = time.perf_counter()
+    while time.perf_counter() - start < seconds or len(times) < 50:
+        t = time.perf_counter()
+        predict(one)
+        times.append(time.perf_counter() - t)
+    return 1e6 * statistics.median(times)
+
+
+def measure(
+    entry, views, seconds: float, modes: tuple[bool, ...], latency: bool, say: Say
+) -> dict[str, Any]:
+    """One row: training rate (and, with `latency`, batch-1 latency) in each mode, and the
+    FLOPs per second of training in its best mode."""
+    row: dict[str, Any] = {"model": entry.name, "backend": entry.backend}
+    names = ["compiled" if c else "plain" for c in modes]
+    for compiled, mode in zip(modes, names):
+        say(f"training, {mode}")
+        row[f"train_samples_per_s_{mode}"] = train_rate(entry, views, compiled, seconds)
+        if latency:
+            say(f"batch-1 inference, {mode}")
+            row[f"infer_batch1_us_{mode}"] = latency_us(entry, views, compiled, seconds)
+    row["train_best"] = max(names, key=lambda m: row[f"train_samples_per_s_{m}"])
+    if latency:
+        row["infer_best"] = min(names, key=lambda m: row[f"infer_batch1_us_{m}"])
+    say("counting FLOPs")
+    flops = step_flops_per_sample(entry, dims_of(views[entry.view]), BATCH)
+    row["train_flops_per_sample"] = flops
+    row["train_flops_per_s"] = flops * row[f"train_samples_per_s_{row['train_best']}"]
+    return row
+
+
+def measure_setting(job: dict[str, Any], cores: list[int], say: Say) -> dict[str, Any]:
+    """Every row of `job` and both matmul rates, then each row's share of the best of them
+    (and of its own backend's); the threads each backend used and the kernel pins in force."""
+    from symbench.core.robot.specs import load_robot
+    from symbench.testing.synthetic import synthetic_views
+
+    started = time.perf_counter()
+    views = synthetic_views(load_robot(job["robot"]).n_legs, 64 * BATCH, seed=0)
+    entries = [
+        registry.model(n, b) for b in BACKENDS for n in job["models"] if b in job["backends"]
+    ]
+    rows: list[dict[str, Any]] = []
+    matmul: dict[str, float] = {}
+    threads: dict[str, int] = {}
+    for backend in BACKENDS:
+        for entry in (e for e in entries if e.backend == backend):
+            both = job["modes"] == "both"
+            modes = (False, True) if both else (get_backend(backend).default_compiled,)
+            prefix = f"[{len(rows) + 1}/{len(entries)}] {entry.name}/{backend}"
+            say_row = _timed(say, prefix, started)
+            rows.append(measure(entry, views, job["seconds"], modes, job["latency"], say_row))
+        say(f"{backend}: dense matmul rate ({MATMUL_SIZE}x{MATMUL_SIZE}, float32)")
+        matmul[backend] = matmul_flops_per_s(backend, job["seconds"])
+        threads[backend] = _threads_used(backend)
+    best = max(matmul, key=matmul.__getitem__)
+    for row in rows:
+        row["share_of_best_matmul"] = row["train_flops_per_s"] / matmul[best]
+        row["share_of_own_matmul"] = row["train_flops_per_s"] / matmul[row["backend"]]
+    return {
+        "threads": len(cores),
+        "cores": cores,
+        "threads_used": threads,
+        "matmul_flops_per_s": matmul,
+        "best_matmul_backend": best,
+        "latency_measured": job["latency"],
+        "kernel_pins": _kernel_pins(),
+        "seconds": round(time.perf_counter() - started, 1),
+        "rows": rows,
+    }
+
+
+def _timed(say: Say, prefix: str, started: float) -> Say:
+    """`say` with a row's prefix and the seconds since the setting started."""
+    return lambda what: say(f"{prefix}: {what} ({time.perf_counter() - started:.0f} s)")
+
+
+def _threads_used(backend: str) -> int:
+    """torch's intra-op threads; the threads of XLA's compute pool, which it sized by this
+    process's cores (counted after the matmul, so the pool exists)."""
+    if backend == "torch":
+        import torch
+
+        return torch.get_num_threads()
+    return threads_named(XLA_POOL_THREAD)
+
+
+def _kernel_pins() -> dict[str, str | None]:
+    """The training kernel pins (`symbench.core.training.kernels`) as this process has them,
+    and the kernels torch's own loops run."""
+    import torch
+
+    pins: dict[str, str | None] = {name: os.environ.get(name) for name in TORCH_PINS}
+    pins["XLA_FLAGS"] = os.environ.get("XLA_FLAGS")
+    pins["torch_cpu_capability"] = torch.backends.cpu.get_cpu_capability()
+    return pins
