@@ -69,7 +69,11 @@ from .core.sim.tracking.references import (
     oracle_policy as oracle_policy,
     model_jobs as model_jobs,
 )
-from .core.data.symmetry.report import dataset_symmetry as dataset_symmetry
+from .core.data.symmetry.report import (
+    NoImagePairsError as NoImagePairsError,
+    dataset_symmetry as dataset_symmetry,
+)
+from .core.data.twins import twin_symmetry as twin_symmetry
 
 # Writing splits
 from .core.data.splits import (

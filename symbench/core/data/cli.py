@@ -309,7 +309,7 @@ def symmetry_command(
     from symbench.core.data.symmetry.pairing import READING_NAMES
     from symbench.core.data.symmetry.plot import PLOT_NAME, symmetry_png
     from symbench.core.data.symmetry.report import dataset_symmetry
-    from symbench.core.data.symmetry.twins import twin_symmetry
+    from symbench.core.data.twins import twin_symmetry
 
     dataset = load_dataset(dataset_id)
     if twins is None:

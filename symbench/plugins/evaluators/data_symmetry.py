@@ -15,9 +15,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from symbench import EvaluationContext, dataset_symmetry
-from symbench.core.data.symmetry.report import NoImagePairsError
-from symbench.core.data.symmetry.twins import twin_symmetry
+from symbench import EvaluationContext, NoImagePairsError, dataset_symmetry, twin_symmetry
 
 NAME = "data-symmetry"
 DESCRIPTION = (

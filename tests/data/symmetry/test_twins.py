@@ -20,7 +20,7 @@ from symbench.core.data.symmetry.report import (
     NoImagePairsError,
     dataset_symmetry,
 )
-from symbench.core.data.symmetry.twins import twin_symmetry, twins_dataset
+from symbench.core.data.twins import twin_symmetry, twins_dataset
 from symbench.core.sim.scene.scenario import Scenario
 
 

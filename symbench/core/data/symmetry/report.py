@@ -58,11 +58,11 @@ within its noise; anything above is a measurable asymmetry, reported as the rati
 error / floor.
 
 **Constructed pairs.** A dataset of climbs drawn from continuous distributions (v7) holds
-no image pairs. With `--twins N` the pairs are made on purpose instead (`twins.py`): N of a
+no image pairs. With `--twins N` the pairs are made on purpose instead (`symbench.core.data.twins`): N of a
 generated dataset's climbs simulated again beside twins turned by one symmetry step, and
 the report says so (`constructed`).
 
-The pieces: `pairing.py` finds the image and repeat pairs, `twins.py` constructs them,
+The pieces: `pairing.py` finds the image and repeat pairs, `symbench.core.data.twins` constructs them,
 `measure.py` compares them against the floor, `plot.py` draws the figure; this module holds
 the report itself.
 """
@@ -70,14 +70,11 @@ the report itself.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from symbench.core.common.errors import SymbenchError
 from symbench.core.data.symmetry.alignment import Alignment
 from symbench.core.symmetry.groups import GroupElement
-
-if TYPE_CHECKING:
-    from symbench.core.data.symmetry.twins import Twins
 
 GROUPS: dict[str, tuple[str, ...]] = {
     "joint states": ("q", "qd", "qdd"),
@@ -90,6 +87,36 @@ FLOAT_PRECISION = 1e-6  # relative error below this: symmetric up to rounding
 
 class NoImagePairsError(SymbenchError):
     """No two trajectories of the dataset are images of each other: nothing to measure."""
+
+
+@dataclass(frozen=True)
+class Twins:
+    """How a report's image pairs were constructed (the report's `constructed`)."""
+
+    source: str  # the dataset whose climbs were simulated again
+    dataset: str  # the derived dataset of originals and twins
+    climbs: int
+    step_deg: float
+    reproduced: bool  # every original simulated again has the source's bytes
+
+    def sentence(self) -> str:
+        return (
+            f"image pairs constructed, not found: {self.climbs} climbs of {self.source} "
+            f"simulated again turned by one symmetry step ({self.step_deg:g} degrees of yaw), "
+            f"kept as {self.dataset}; the originals simulated again "
+            + ("match" if self.reproduced else "differ from")
+            + " the source's files"
+        )
+
+    def to_dict(self) -> dict[str, Any]:
+        return {
+            "source": self.source,
+            "dataset": self.dataset,
+            "climbs": self.climbs,
+            "step_deg": self.step_deg,
+            "originals_reproduced": self.reproduced,
+            "note": self.sentence(),
+        }
 
 
 @dataclass(frozen=True)
@@ -120,7 +147,7 @@ class SymmetryReport:
     reading: str = "recorded"  # how the scenarios were read: "simulator" or "recorded"
     repeat_alignments: list[tuple[int, int, Alignment]] = field(default_factory=list)
     floor_note: str | None = None  # why the floor from repeats tells nothing, when it does not
-    constructed: Twins | None = None  # how the pairs were made, when not found (`twins.py`)
+    constructed: Twins | None = None  # how the pairs were made, when not found (`data.twins`)
 
     @property
     def unaligned(self) -> list[Pair]:

@@ -15,44 +15,14 @@ their own in the cache, `<ID>-twins<N>`, generated (and resumed, and reused) lik
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from typing import Any
 
 from symbench.core.common.errors import SymbenchError
 from symbench.core.data.dataset import Dataset, load_dataset
 from symbench.core.data.storage.metadata import METADATA, dataset_dir, library_versions
-from symbench.core.data.symmetry.report import SymmetryReport, dataset_symmetry
+from symbench.core.data.symmetry.report import SymmetryReport, Twins, dataset_symmetry
 from symbench.core.sim.scene.scenario import Scenario
-
-
-@dataclass(frozen=True)
-class Twins:
-    """How a report's image pairs were constructed (the report's `constructed`)."""
-
-    source: str  # the dataset whose climbs were simulated again
-    dataset: str  # the derived dataset of originals and twins
-    climbs: int
-    step_deg: float
-    reproduced: bool  # every original simulated again has the source's bytes
-
-    def sentence(self) -> str:
-        return (
-            f"image pairs constructed, not found: {self.climbs} climbs of {self.source} "
-            f"simulated again turned by one symmetry step ({self.step_deg:g} degrees of yaw), "
-            f"kept as {self.dataset}; the originals simulated again "
-            + ("match" if self.reproduced else "differ from")
-            + " the source's files"
-        )
-
-    def to_dict(self) -> dict[str, Any]:
-        return {
-            "source": self.source,
-            "dataset": self.dataset,
-            "climbs": self.climbs,
-            "step_deg": self.step_deg,
-            "originals_reproduced": self.reproduced,
-            "note": self.sentence(),
-        }
 
 
 def twins_id(dataset: Dataset, n: int) -> str:
