@@ -58,13 +58,13 @@ within its noise; anything above is a measurable asymmetry, reported as the rati
 error / floor.
 
 **Constructed pairs.** A dataset of climbs drawn from continuous distributions (v7) holds
-no image pairs. With `--twins N` the pairs are made on purpose instead (`symbench.core.data.twins`): N of a
-generated dataset's climbs simulated again beside twins turned by one symmetry step, and
-the report says so (`constructed`).
+no image pairs. With `--twins N` the pairs are made on purpose instead
+(`symbench.core.data.twins`): N of a generated dataset's climbs simulated again beside twins
+turned by one symmetry step, and the report says so (`constructed`).
 
-The pieces: `pairing.py` finds the image and repeat pairs, `symbench.core.data.twins` constructs them,
-`measure.py` compares them against the floor, `plot.py` draws the figure; this module holds
-the report itself.
+The pieces: `pairing.py` finds the image and repeat pairs, `symbench.core.data.twins`
+constructs them, `measure.py` compares them against the floor, `plot.py` draws the figure;
+this module holds the report itself.
 """
 
 from __future__ import annotations
