@@ -143,6 +143,8 @@ def test_asymmetric_variants_are_plotted_against_their_asymmetry(
     assert plotted["path"].name == "hexa-asymmetry.png"
     curves = plotted["curves"]
     assert sorted(curves) == ["ffnn (acc, torch), iid", "sdnn (acc, torch), iid"]
-    x, mean, std = curves["sdnn (acc, torch), iid"]
-    assert x == [0.0, 0.1] and mean == pytest.approx([0.01, 0.11]) and std == [0.0, 0.0]
-    assert plotted["data"][:2] == ([0.0, 0.1], pytest.approx([1e-13, 0.05]))
+    x, spreads = curves["sdnn (acc, torch), iid"]
+    assert x == [0.0, 0.1] and [s.mean for s in spreads] == pytest.approx([0.01, 0.11])
+    assert [s.low for s in spreads] == [s.high for s in spreads] == pytest.approx([0.01, 0.11])
+    assert spreads[1].seeds == pytest.approx((0.11, 0.11, 0.11))  # each seed's dot
+    assert plotted["data"] == ([0.0, 0.1], pytest.approx([1e-13, 0.05]))

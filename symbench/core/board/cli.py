@@ -60,8 +60,8 @@ def leaderboard(
     clips: bool,
     clips_from: Path | None,
 ) -> None:
-    """Aggregate records (mean ± std over seeds), rank by test RMSE, write tables, or with
-    --html a static site (docs/leaderboard-site.md)."""
+    """Aggregate records (mean, std and 95 % bootstrap interval over seeds), rank by test
+    RMSE in rank bands, write tables, or with --html a static site (docs/leaderboard-site.md)."""
     from symbench.core.board.leaderboard import write_leaderboard
     from symbench.core.board.site import build_site
     from symbench.core.common.paths import writable_folder

@@ -2,17 +2,19 @@
 
 Records are grouped by dataset, training protocol, split, model, variant and backend (a
 dataset belongs to one robot; a standard dataset id names its robot and preset); metrics are
-averaged over seeds with their standard deviation, and each (dataset, protocol, split) table
-is ranked by test torque RMSE. Protocols are never mixed in one table: each has its own
-sections. Every row shows the parameter count, the gradient steps trained and why training
-stopped (records from before the `converge` protocol were trained under the paper's rule;
-their stop reason follows from whether they stopped before the epoch cap).
-Each robot's page has a section per dataset, so a robot's standard data and its imported
-logs sit side by side, never mixed. Records of one dataset id made on different contents
-(another version of the data) or with different presets (budgets) are never mixed either:
-their numbers would not be comparable, so the aggregation refuses and says why. Schema-1 (unsealed)
-records are still shown, so that old boards can be read; publishing refuses them. Output file
-names come from record fields that the schema restricts to safe identifiers.
+averaged over seeds with their standard deviation and 95 % bootstrap interval, and each
+(dataset, protocol, split) table is ranked by mean test torque RMSE, with rank bands that
+join the models a paired test over seeds cannot tell apart (`statistics`). Protocols are
+never mixed in one table: each has its own sections. Every row shows the parameter count,
+the gradient steps trained and why training stopped (records from before the `converge`
+protocol were trained under the paper's rule; their stop reason follows from whether they
+stopped before the epoch cap). Each robot's page has a section per dataset, so a robot's
+standard data and its imported logs sit side by side, never mixed. Records of one dataset id
+made on different contents (another version of the data) or with different presets (budgets)
+are never mixed either: their numbers would not be comparable, so the aggregation refuses
+and says why. Schema-1 (unsealed) records are still shown, so that old boards can be read;
+publishing refuses them. Output file names come from record fields that the schema restricts
+to safe identifiers.
 """
 
 from __future__ import annotations
@@ -24,7 +26,9 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from symbench.core.board.plots import asymmetry_png, sample_efficiency_png
+from symbench.core.board.cells import cell_of
+from symbench.core.board.plots import Spread, asymmetry_png, sample_efficiency_png
+from symbench.core.board.statistics import mean_interval, rank_bands
 from symbench.core.board.summary import headline
 from symbench.core.common.atomic import write_text_atomic
 from symbench.core.common.errors import SymbenchError
@@ -119,8 +123,10 @@ def _flat(record: RecordV1) -> dict:
 
 
 def aggregate(records: list[tuple[Path, RecordV1]]) -> pd.DataFrame:
-    """Mean and standard deviation over seeds per (dataset, split, model, variant, backend),
-    ranked within each dataset and split; the dataset's robot and preset are columns too."""
+    """Mean, standard deviation and 95 % bootstrap interval over seeds per (dataset, split,
+    model, variant, backend), ranked within each dataset and split with rank bands; the
+    dataset's robot and preset are columns too, and `per_seed` holds each metric's values
+    by seed (for the plots' dots, the bands and the aggregate across robots)."""
     check_consistent(records)
     runs = pd.DataFrame([_flat(r) for _, r in records])
     duplicate = runs.duplicated(
@@ -154,11 +160,22 @@ def aggregate(records: list[tuple[Path, RecordV1]]) -> pd.DataFrame:
     for m in metrics:
         table[f"{m}_mean"] = grouped[m].mean()
         table[f"{m}_std"] = grouped[m].std(ddof=1)
+        bounds = [mean_interval(part.to_numpy()) for _, part in grouped[m]]
+        table[f"{m}_ci_low"] = [low for low, _ in bounds]
+        table[f"{m}_ci_high"] = [high for _, high in bounds]
+    table["per_seed"] = pd.Series(
+        [
+            {m: dict(zip(part.seed, part[m])) for m in metrics}
+            for _, part in grouped[["seed", *metrics]]
+        ],
+        index=table.index,
+        dtype=object,
+    )
     table = table.reset_index()
-    table["rank"] = (
-        table.groupby(["dataset", "protocol", "split"])["rmse_Nm_mean"]
-        .rank(method="min")
-        .astype(int)
+    tables = table.groupby(["dataset", "protocol", "split"])
+    table["rank"] = tables["rmse_Nm_mean"].rank(method="min").astype(int)
+    table["rank_band"] = tables["per_seed"].transform(
+        lambda part: rank_bands([seeds["rmse_Nm"] for seeds in part])
     )
     order = ["robot", "dataset", "protocol", "split", "rank", "model", "variant", "backend"]
     return table.sort_values(order).reset_index(drop=True)
@@ -170,17 +187,29 @@ def _counts(reasons: pd.Series) -> str:
     return ", ".join(f"{r} {counts[r]}" for r in sorted(counts.index))
 
 
-def metric_cell(mean: float, std: float) -> str:
-    if np.isnan(mean):
-        return "-"
-    return f"{mean:.4g}" if np.isnan(std) else f"{mean:.4g} ± {std:.2g}"
+def spread(row: pd.Series, metric: str) -> Spread:
+    """A metric of an aggregate row as the plots draw it: mean, interval, each seed."""
+    values = [v for v in row.per_seed[metric].values() if not np.isnan(v)]
+    return Spread(
+        float(row[f"{metric}_mean"]),
+        float(row[f"{metric}_ci_low"]),
+        float(row[f"{metric}_ci_high"]),
+        tuple(values),
+    )
 
 
 def markdown(table: pd.DataFrame, robot: str) -> str:
     """One robot's leaderboard: a section per dataset, in it one per split, rows ranked by
     RMSE."""
     metrics = [c[: -len("_mean")] for c in table.columns if c.endswith("_mean")]
-    lines = [f"# {robot}", ""]
+    lines = [
+        f"# {robot}",
+        "",
+        "Every metric: mean [95 % bootstrap interval] over seeds. Rank: a band joining the "
+        "models that a paired t-test over seeds (log test RMSE, p < 0.05) cannot tell apart "
+        "(docs/leaderboard-protocol.md#statistics).",
+        "",
+    ]
     for (did, preset, protocol), data in table[table.robot == robot].groupby(
         ["dataset", "preset", "protocol"], sort=True
     ):
@@ -201,10 +230,10 @@ def _split_tables(table: pd.DataFrame, metrics: list[str]) -> list[str]:
             "|---|---|---|---|---|---|" + "---|" * len(metrics) + "---|",
         ]
         for _, row in part.iterrows():
-            cells = [metric_cell(row[f"{m}_mean"], row[f"{m}_std"]) for m in metrics]
+            cells = [cell_of(row, m) for m in metrics]
             flag = "" if row.seeds >= MIN_SEEDS else f" (<{MIN_SEEDS})"
             lines.append(
-                f"| {row['rank']} | {row.model} | {row.variant} | {row.backend} "
+                f"| {row.rank_band} | {row.model} | {row.variant} | {row.backend} "
                 f"| {row.seeds}{flag} | {row.parameters} | "
                 + " | ".join(cells)
                 + f" | {row.stopped_by} |"
@@ -233,8 +262,7 @@ def sample_efficiency_plot(table: pd.DataFrame, robot: str, path: Path) -> bool:
         on = (f", {did}" if several else "") + (f", {protocol}" if protocols else "")
         curves[f"{model} ({variant}, {backend}{on})"] = (
             part.fraction.tolist(),
-            part.rmse_Nm_mean.tolist(),
-            part.rmse_Nm_std.fillna(0).tolist(),
+            [spread(row, "rmse_Nm") for _, row in part.iterrows()],
         )
     sample_efficiency_png(curves, f"{robot}: sample efficiency", path)
     return True
@@ -260,14 +288,13 @@ def asymmetry_plot(table: pd.DataFrame, base: str, path: Path) -> bool:
         on = f", {preset}, {protocol}" if several else ""
         curves[f"{model} ({variant}, {backend}), {split}{on}"] = (
             part.asymmetry.tolist(),
-            part.rmse_Nm_mean.tolist(),
-            part.rmse_Nm_std.fillna(0).tolist(),
+            [spread(row, "rmse_Nm") for _, row in part.iterrows()],
         )
     data = None
     if "data_tau_asym_mean" in rows:
         measured = rows.dropna(subset=["data_tau_asym_mean"]).groupby("asymmetry")
         per_dataset = measured.data_tau_asym_mean.first()
-        data = (per_dataset.index.tolist(), per_dataset.tolist(), None)
+        data = (per_dataset.index.tolist(), per_dataset.tolist())
     asymmetry_png(curves, data, f"{base}: error against asymmetry", path)
     return True
 
@@ -277,7 +304,8 @@ def write_leaderboard(results: Path, out: Path) -> list[Path]:
     table = aggregate(load_records(results))
     written = []
     csv = out / "leaderboard.csv"
-    write_text_atomic(csv, table.to_csv(index=False, float_format="%.6g"))
+    flat = table.drop(columns="per_seed")
+    write_text_atomic(csv, flat.to_csv(index=False, float_format="%.6g"))
     written.append(csv)
     summary = out / "summary.md"
     write_text_atomic(summary, headline(table))

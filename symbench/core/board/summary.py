@@ -8,8 +8,10 @@ dataset id names its robot, e.g. hexa-climb-small-v5), so this page puts them th
 
 from __future__ import annotations
 
-import numpy as np
 import pandas as pd
+
+from symbench.core.board.cells import cell_of, metric_cell
+from symbench.core.board.statistics import RESAMPLES, Interval, across_tasks
 
 SPLIT_ORDER = ("iid", "unseen-heading", "unseen-rotation", "orbit-rotation")
 
@@ -32,12 +34,6 @@ def _labels(table: pd.DataFrame) -> pd.Series:
     )
 
 
-def _cell(mean: float, std: float, digits: int = 3) -> str:
-    if np.isnan(mean):
-        return "-"
-    return f"{mean:.{digits}g}" if np.isnan(std) else f"{mean:.{digits}g} ± {std:.2g}"
-
-
 def _column_order(table: pd.DataFrame) -> list[str]:
     """Models by their mean rank over all (dataset, split) groups, then by name."""
     mean_rank = table.groupby("label")["rank"].mean()
@@ -56,12 +52,7 @@ def error_section(table: pd.DataFrame, metric: str, title: str) -> list[str]:
     groups = table.groupby(["dataset", "split"], sort=False)
     for did, split in sorted(groups.groups, key=lambda k: (k[0], split_order(k[1]))):
         part = groups.get_group((did, split)).set_index("label")
-        cells = [
-            _cell(part.at[c, f"{metric}_mean"], part.at[c, f"{metric}_std"])
-            if c in part.index
-            else "-"
-            for c in columns
-        ]
+        cells = [cell_of(part.loc[c], metric, 3) if c in part.index else "-" for c in columns]
         lines.append(f"| {did} | {split} | " + " | ".join(cells) + " |")
     return lines + [""]
 
@@ -74,8 +65,8 @@ def closed_loop_section(table: pd.DataFrame) -> list[str]:
     rows = table[table.cl_held_s_mean.notna()]
     columns = _column_order(rows)
     lines = [
-        "## Closed loop at the headline PD fraction: normalized score (floor 0, oracle 1) "
-        "/ seconds held, mean over seeds",
+        "## Closed loop at the headline PD fraction: normalized score (floor 0, oracle 1), "
+        "mean [95 % CI] over seeds / seconds held, mean over seeds",
         "",
         "| dataset | split | " + " | ".join(columns) + " |",
         "|---|---|" + "---|" * len(columns),
@@ -83,14 +74,62 @@ def closed_loop_section(table: pd.DataFrame) -> list[str]:
     for (did, split), part in rows.groupby(["dataset", "split"], sort=True):
         part = part.set_index("label")
         cells = [
-            f"{_cell(part.at[c, 'cl_score_mean'], part.at[c, 'cl_score_std'], 2)} / "
-            f"{part.at[c, 'cl_held_s_mean']:.3g}"
+            f"{cell_of(part.loc[c], 'cl_score', 2)} / {part.at[c, 'cl_held_s_mean']:.3g}"
             if c in part.index
             else "-"
             for c in columns
         ]
         lines.append(f"| {did} | {split} | " + " | ".join(cells) + " |")
     return lines + [""]
+
+
+def aggregate_section(table: pd.DataFrame) -> list[str]:
+    """One protocol's models over every dataset and split that all of them ran with at
+    least two common seeds: the interquartile mean of normalized errors and the probability
+    of improvement, with stratified bootstrap intervals (`statistics.across_tasks`)."""
+    columns = _column_order(table)
+    groups = table.groupby(["dataset", "split"], sort=True)
+    tasks = []
+    for _, part in groups:
+        if sorted(part.label) == sorted(columns):
+            rmse = {r.label: r.per_seed["rmse_Nm"] for _, r in part.iterrows()}
+            by_seed = pd.DataFrame(rmse)[columns].dropna()
+            tasks += [by_seed] if len(by_seed) >= 2 else []
+    if len(columns) < 2 or len(tasks) < 2:
+        return []
+    result = across_tasks(tasks)
+    lines = [
+        "## Aggregate over datasets and splits: normalized test RMSE",
+        "",
+        "A seed's normalized error is its test RMSE over the lowest mean test RMSE of any "
+        f"model on the same dataset and split (1: that best mean). Over the {result.tasks} "
+        f"of {groups.ngroups} (dataset, split) pairs that every model ran with at least two "
+        f"common seeds, {result.seeds} (pair, seed) values per model; 95 % stratified "
+        f"bootstrap intervals ({RESAMPLES} resamples of the seeds within each pair).",
+        "",
+        "| model | interquartile mean [95 % CI] |",
+        "|---|---|",
+    ]
+    for label in columns:
+        iqm = result.iqm[label]
+        lines.append(f"| {label} | {metric_cell(iqm.value, iqm.low, iqm.high, 3)} |")
+    lines += [
+        "",
+        "Probability of improvement: the chance that the row's model has a lower test RMSE "
+        "than the column's on the same seed of a pair (a tie counts one half), averaged over "
+        "the pairs [95 % CI].",
+        "",
+        "| P(row better) | " + " | ".join(columns) + " |",
+        "|---|" + "---|" * len(columns),
+    ]
+    for x in columns:
+        cells = [_probability(result.improvement[x, y]) if x != y else "-" for y in columns]
+        lines.append(f"| {x} | " + " | ".join(cells) + " |")
+    return lines + [""]
+
+
+def _probability(p: Interval) -> str:
+    return f"{p.value:.2f} [{p.low:.2f}, {p.high:.2f}]"
 
 
 def headline(table: pd.DataFrame) -> str:
@@ -100,18 +139,21 @@ def headline(table: pd.DataFrame) -> str:
     lines = [
         "# Leaderboard summary",
         "",
-        f"Seeds per run group: {', '.join(map(str, seeds))}. Rank within each dataset and "
-        "split is by mean test RMSE; the per-robot pages have every metric.",
+        f"Seeds per run group: {', '.join(map(str, seeds))}. Every mean comes with its 95 % "
+        "bootstrap interval over seeds [low, high]. Rank within each dataset and split is by "
+        "mean test RMSE; the per-robot pages have every metric and the rank bands "
+        "(docs/leaderboard-protocol.md#statistics).",
         "",
     ]
     for protocol, part in table.groupby("protocol", sort=True):
         part = part.assign(label=_labels(part))
         lines += [f"# Trained under the {protocol} protocol", ""]
-        lines += error_section(part, "rmse_Nm", "Test torque RMSE (N m), mean ± std over seeds")
+        lines += error_section(part, "rmse_Nm", "Test torque RMSE (N m), mean [95 % CI] over seeds")
         lines += error_section(
             part,
             "nrmse",
             "Normalized test RMSE (RMSE / std of the test torques), comparable across robots",
         )
+        lines += aggregate_section(part)
         lines += closed_loop_section(part)
     return "\n".join(lines)

@@ -12,7 +12,8 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from symbench.core.board.leaderboard import COLUMNS, MIN_SEEDS, metric_cell, protocol_of
+from symbench.core.board.cells import cell_of
+from symbench.core.board.leaderboard import COLUMNS, MIN_SEEDS, protocol_of
 from symbench.core.board.site import names
 from symbench.core.board.site.names import GroupKey
 from symbench.core.board.site.provenance import Provenance, provenance
@@ -20,6 +21,7 @@ from symbench.core.board.summary import split_order
 from symbench.core.runs.results import RecordV1
 
 CLOSED_LOOP = "closed-loop"  # its columns come last: they measure control, not the fit
+OVER_SEEDS = "mean [95 % bootstrap interval] over seeds"
 
 
 @dataclass(frozen=True)
@@ -39,7 +41,8 @@ class Column:
 @dataclass(frozen=True)
 class Row:
     key: GroupKey
-    rank: int
+    rank: int  # by mean test RMSE: what sorting compares
+    band: str  # the rank band shown (`statistics.rank_bands`)
     entry: str  # the group's entry page
     cells: tuple[Cell, ...]  # one per column of the page
 
@@ -85,12 +88,13 @@ class EntryPage:
     runs: tuple[Provenance, ...]
 
 
-def mean_std(name: str) -> Callable[[pd.Series], Cell]:
-    """The mean ± std over seeds of an aggregated column, as on the Markdown board."""
+def mean_ci(name: str) -> Callable[[pd.Series], Cell]:
+    """The mean [95 % interval] over seeds of an aggregated column, as on the Markdown
+    board."""
 
     def read(row: pd.Series) -> Cell:
-        mean, std = float(row[f"{name}_mean"]), float(row[f"{name}_std"])
-        return Cell(metric_cell(mean, std), "" if np.isnan(mean) else repr(mean))
+        mean = float(row[f"{name}_mean"])
+        return Cell(cell_of(row, name), "" if np.isnan(mean) else repr(mean))
 
     return read
 
@@ -118,15 +122,15 @@ def columns(rows: pd.DataFrame) -> tuple[Column, ...]:
 
     def metrics(closed_loop: bool) -> list[Column]:
         return [
-            Column(name, f"{evaluator} · {metric}: mean ± std over seeds", True, mean_std(name))
+            Column(name, f"{evaluator} · {metric}: {OVER_SEEDS}", True, mean_ci(name))
             for (evaluator, metric), name in COLUMNS.items()
             if (evaluator == CLOSED_LOOP) == closed_loop and _has(rows, name)
         ]
 
     training = [
         Column("parameters", "trainable parameters", True, _parameters),
-        Column("steps", "gradient steps trained: mean ± std over seeds", True, mean_std("steps")),
-        Column("epochs", "passes over the training data: mean ± std", True, mean_std("epochs")),
+        Column("steps", f"gradient steps trained: {OVER_SEEDS}", True, mean_ci("steps")),
+        Column("epochs", f"passes over the training data: {OVER_SEEDS}", True, mean_ci("epochs")),
         Column("stopped_by", "why training stopped, with the number of seeds", False, _stopped_by),
         Column("seeds", f"seeds averaged (flagged below {MIN_SEEDS})", True, _seeds),
     ]
@@ -149,7 +153,7 @@ def row_key(row: pd.Series) -> GroupKey:
 def _row(row: pd.Series, page_columns: tuple[Column, ...]) -> Row:
     key = row_key(row)
     cells = tuple(c.read(row) for c in page_columns)
-    return Row(key, int(row["rank"]), names.entry_page(key), cells)
+    return Row(key, int(row["rank"]), row.rank_band, names.entry_page(key), cells)
 
 
 def _by_split(rows: pd.DataFrame) -> list[tuple[str, pd.DataFrame]]:

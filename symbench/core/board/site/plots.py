@@ -9,8 +9,8 @@ from pathlib import Path
 
 import pandas as pd
 
-from symbench.core.board.leaderboard import COLUMNS, sample_efficiency_plot
-from symbench.core.board.plots import Bar, grouped_bars_png
+from symbench.core.board.leaderboard import COLUMNS, sample_efficiency_plot, spread
+from symbench.core.board.plots import Spread, grouped_bars_png
 from symbench.core.board.site import names
 from symbench.core.board.summary import split_order
 
@@ -45,8 +45,8 @@ def _sample_efficiency(rows: pd.DataFrame, robot: str, dataset: str, site: Path)
     return Plot(
         title,
         path,
-        "Test torque RMSE (mean ± std over seeds) against the fraction of training "
-        "trajectories; iid is the fraction 1.",
+        "Test torque RMSE (mean, 95 % bootstrap interval and each seed's value) against the "
+        "fraction of training trajectories; iid is the fraction 1.",
     )
 
 
@@ -62,7 +62,7 @@ def _closed_loop(rows: pd.DataFrame, robot: str, dataset: str, site: Path) -> Pl
         path = names.plot_file(robot, dataset, "closed-loop")
         grouped_bars_png(
             _bars(measured, column),
-            f"{metric} (mean ± std over seeds)",
+            f"{metric} (mean, 95 % CI, seeds)",
             f"{robot}, {dataset}: closed loop",
             site / path,
         )
@@ -77,16 +77,16 @@ def _closed_loop(rows: pd.DataFrame, robot: str, dataset: str, site: Path) -> Pl
     )
 
 
-def _bars(rows: pd.DataFrame, column: str) -> dict[str, dict[str, Bar]]:
-    """split -> model label -> (mean, std); the protocol joins the label when there are
-    several, so that no two rows share a bar."""
+def _bars(rows: pd.DataFrame, column: str) -> dict[str, dict[str, Spread]]:
+    """split -> model label -> its spread over seeds; the protocol joins the label when
+    there are several, so that no two rows share a bar."""
     protocols = rows.protocol.nunique() > 1
-    groups: dict[str, dict[str, Bar]] = {}
+    groups: dict[str, dict[str, Spread]] = {}
     for split in sorted(rows.split.unique(), key=split_order):
         groups[split] = {
             f"{r.model} ({r.variant}, {r.backend}"
             + (f", {r.protocol}" if protocols else "")
-            + ")": (float(r[f"{column}_mean"]), float(r[f"{column}_std"]))
+            + ")": spread(r, column)
             for _, r in rows[rows.split == split].iterrows()
         }
     return groups

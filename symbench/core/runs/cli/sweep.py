@@ -57,7 +57,7 @@ EVERY = "every run"
 )
 @click.option(
     "--seeds",
-    default="0,1,2",
+    default="0,1,2,3,4",
     show_default=True,
     type=CommaList(SEED),
     help="Comma-separated seeds.",
