@@ -24,7 +24,15 @@ ATTRS: dict[str, tuple[type, ...]] = {
 }
 # what Optuna's replay of a damaged journal raises: undecodable lines (ValueError, its
 # JSONDecodeError and UnicodeDecodeError), and operations missing fields or of another shape
-REPLAY_ERRORS = (ValueError, KeyError, TypeError, IndexError, AttributeError, RecursionError)
+REPLAY_ERRORS = (
+    ValueError,
+    KeyError,
+    TypeError,
+    IndexError,
+    AttributeError,
+    RecursionError,
+    AssertionError,  # an operation code Optuna does not know: "Should not reach."
+)
 
 
 def open_study(journal: Path, name: str) -> Any:
@@ -52,7 +60,9 @@ def open_study(journal: Path, name: str) -> Any:
 def _foreign(params: dict[str, Any], attrs: dict[str, Any]) -> str | None:
     """Why a finished trial is not one this search wrote (None: it is)."""
     if set(params) != set(PARAMS):
-        return f"has parameters {sorted(params)}, not {list(PARAMS)}"
+        return f"has parameters {sorted(map(str, params))}, not {list(PARAMS)}"
+    if not all(isinstance(params[k], float) for k in PARAMS):
+        return f"has parameters {json.dumps(params)[:60]}, not numbers"
     for key, types in ATTRS.items():
         value = attrs.get(key)
         if not isinstance(value, types) or isinstance(value, bool):
