@@ -28,3 +28,11 @@ def error_line(result: Result, status: int) -> str:
     errors = [line for line in result.stderr.splitlines() if line.startswith("Error")]
     assert len(errors) == 1, result.stderr
     return " ".join(result.stderr[result.stderr.index(errors[0]) :].split())
+
+
+def refusal(result: Result) -> str:
+    """The one error line of a command that refused its input (1 failure, 2 usage error);
+    never an "internal error", the command line's word for an exception nobody expected."""
+    line = error_line(result, result.exit_code if result.exit_code in (1, 2) else 1)
+    assert not line.startswith("Error: internal error"), line
+    return line

@@ -9,10 +9,13 @@ from rich.table import Table
 
 from symbench.core.common.cli_types import SEED
 from symbench.core.common.console import StdoutConsole
+from symbench.core.data.views.model_dims import dims_for
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import BACKENDS
+from symbench.core.robot.specs import load_robot
 from symbench.core.runs.options import size_option, sizes_from
 from symbench.core.symmetry.groups import LegGroup
+from symbench.core.training.buildable import check_buildable
 from symbench.testing.equivariance import EquivarianceReport, check_model
 from symbench.testing.groups import robot_geometry_group
 from symbench.testing.model_group import measure_symmetry_group
@@ -85,6 +88,9 @@ def check_equivariance(
     else:
         entries = [registry.model(model_name, backend)]
     hyper = sizes_from(sizes)
+    n_legs = load_robot(robot_name).n_legs
+    for entry in entries:  # a size that cannot build the network, refused before any check
+        check_buildable(entry, dims_for(entry.view, entry.variant, n_legs), hyper, hyper)
     group: LegGroup | str = robot_name
     frames = None
     if which_group == "geometry":

@@ -395,3 +395,18 @@ def test_the_fraction_splits_are_the_presets_fractions(monkeypatch):
     with_preset(monkeypatch, "paper", sample_efficiency=SampleEfficiency((0.3, 0.5)))
     registered = _fraction_splits(e.name for e in symbench_splits())
     assert registered == sorted([*expected, "fraction-0.3"])
+
+
+def test_presets_read_at_80_columns(monkeypatch):
+    """Before: seven presets squeezed side by side into 80 columns, every value wrapped into
+    a column of one word ("transfe" over "r", "one-sec" over "ond")."""
+    monkeypatch.setenv("COLUMNS", "80")
+    result = invoke("presets")
+    assert result.exit_code == 0, result.output
+    lines = result.stdout.splitlines()
+    assert max(map(len, lines)) <= 80
+    headers = [line.split("┃") for line in lines if line.startswith("┃ section")]
+    assert [h.strip() for cells in headers for h in cells[3:-1]] == list(PRESETS)
+    assert any("│ 45, 135" in line for line in lines) and any(
+        "│ description" in line for line in lines
+    )

@@ -15,7 +15,7 @@ from symbench.core.common.errors import SymbenchError
 from symbench.core.config.presets import dataset_id, preset
 from symbench.core.data import load_dataset
 from symbench.core.data.generation.generate import generate
-from symbench.core.data.splits import SplitContext
+from symbench.core.data.splits import SplitContext, check_split, column_split
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import SplitEntry
 from symbench.core.plugin.host import PluginHost, set_host
@@ -378,3 +378,14 @@ def test_a_split_plugin_is_used_and_its_mistakes_are_named(hexa_small):
             hexa_small.split_indices("unseen-rotatoin", 0)
     finally:
         set_host(None)
+
+
+def test_a_column_split_name_writes_every_digit_and_parses_back():
+    """Found by the property suite: `:g` named --test 1000000 `heading_0_vs_1e+06`, which
+    check_split then called unknown, and rounded 12.3456789 to 12.3457."""
+    split = column_split("heading", ["0"], ["1000000"])
+    assert split.name == "heading_0_vs_1000000"
+    check_split(split.name)
+    assert column_split("yaw", ["12.3456789"], ["-0.00001"]).name == "yaw_12.3456789_vs_m0.00001"
+    with pytest.raises(SymbenchError, match="allows 20 per value"):
+        column_split("yaw", ["1e300"], ["0"])

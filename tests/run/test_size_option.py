@@ -39,3 +39,36 @@ def test_a_keyword_the_model_lacks_is_refused_in_one_line(tmp_path):
     assert "'ring' is not NAME=INT" in error_line(
         invoke("run", "--model", "sdnn", "--robot", "hexa", "--size", "ring"), 2
     )
+
+
+def test_a_size_that_cannot_build_the_model_is_refused_naming_the_nearest_that_builds(home):
+    """Before: latent=0 trained a zero-width network (torch only warned) and wrote a record."""
+    refusals = {
+        "latent=0": "--size latent=0: a width of model sdnn/torch is at least 1; nearest "
+        "buildable: latent=1",
+        "steps=-1": "--size steps=-1: a size of model sdnn/torch is at least 0; nearest "
+        "buildable: steps=0",
+        "ring=2": "--size ring=2: model sdnn/torch could not be built: SymbenchError: ring must "
+        "be 0 or 1, got 2; nearest buildable: ring=1",
+        f"latent={10**12}": f"--size latent={10**12}: model sdnn/torch allows at most 64 x its "
+        "default; the nearest allowed: latent=8192",
+    }
+    for size, message in refusals.items():
+        result = invoke(
+            "run", "--model", "sdnn", "--robot", "hexa", "--preset", "smoke", "--size", size
+        )
+        assert error_line(result, 1) == f"Error: {message}"
+    assert not home.exists()  # refused before any work: no dataset was made
+
+
+def test_a_parameter_count_no_network_comes_near_is_refused_naming_the_nearest(home):
+    """Before: --parameters 3 built a 54-parameter sdnn, 18 times the request, and said
+    nothing."""
+    result = invoke(
+        "run", "--model", "sdnn", "--robot", "hexa", "--preset", "smoke", "--parameters", "3"
+    )
+    assert error_line(result, 1) == (
+        "Error: --parameters 3: the nearest sdnn has 54 parameters (latent=1), 1700% off, "
+        "beyond the 10% a matched size allows; nearest buildable: --parameters 54"
+    )
+    assert not home.exists()

@@ -107,3 +107,18 @@ def test_the_command_prints_the_trials_and_refuses_bad_values_in_one_line(smoke_
     assert error_line(invoke("tune", "--model", "fnn", "--robot", "hexa"), 1).startswith(
         "Error: unknown model 'fnn'"
     )
+
+
+def test_a_damaged_journal_is_named_with_how_to_go_on(smoke_hexa, tmp_path):
+    """Before: "internal error: JSONDecodeError: Expecting value: line 1 column 1 (char 0)",
+    the journal unnamed and nothing said how to go on."""
+    journal = tuning.journal_path(tmp_path, spec(tmp_path))
+    journal.write_bytes(b"\n{}\n")  # a line that is no JSON, with another after it
+    result = invoke(
+        "tune", "--model", "ffnn", "--robot", "hexa", "--preset", "smoke", "--output", tmp_path
+    )
+    assert error_line(result, 1) == (
+        f"Error: tuning journal {journal} is damaged (JSONDecodeError: Expecting value: line 2 "
+        "column 1 (char 1)); to go on, move it aside and run the same command again: the "
+        "search starts afresh (its finished trials are trained again)"
+    )

@@ -40,6 +40,8 @@ def test_every_generator_of_a_built_in_robot_is_verified(robot, geometry, genera
     symmetry = json.loads(result.output)["symmetry"]
     assert [g["generator"] for g in symmetry["generators"]] == generators
     assert [g["declared"] for g in symmetry["generators"]] == [True, False]
+    assert symmetry["geometry_group"] == geometry
+    assert symmetry["groups"] == f"{spec.group.name} declared, {geometry} from geometry"
     assert symmetry["seconds"] == 0.5 and symmetry["tolerance"] == TOLERANCE
     for g in symmetry["generators"]:
         assert g["error"] < 1e-9, g  # about 1e-11 over half a second
@@ -51,7 +53,8 @@ def test_the_report_names_each_generator_and_its_error():
     result = sim_check("magneto")
     assert result.exit_code == 0, result.output
     lines = result.output.splitlines()
-    assert "symmetry over 0.5 s" in lines[-3] and f"tolerance {TOLERANCE:g}" in lines[-3]
+    assert "symmetry over 0.5 s of C2 declared, K4 from geometry: twin" in lines[-3]
+    assert f"tolerance {TOLERANCE:g}" in lines[-3]
     assert lines[-2].startswith("    shift 2: error ") and lines[-2].endswith(" ok")
     assert lines[-1].startswith("    mirror 1 (geometry, not declared): error ")
     assert lines[-1].endswith(" ok")

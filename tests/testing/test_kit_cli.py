@@ -87,3 +87,12 @@ def test_the_model_group_is_printed():
         "ffnn/jax symmetry group (24 permutations tested, vector view relabelled): "
         "trivial: the identity only; breaks the robot group C2 (order 2)"
     )
+
+
+def test_a_size_that_cannot_build_the_model_is_refused_in_one_line():
+    """Before: latent=0 ended in "internal error: ZeroDivisionError" (JAX's initializer)."""
+    result = invoke("--model", "sdnn", "--robot", "hexa", "--size", "latent=0")
+    assert error_line(result, 1) == (
+        "Error: --size latent=0: a width of model sdnn/jax is at least 1; nearest buildable: "
+        "latent=1"
+    )

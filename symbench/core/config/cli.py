@@ -14,6 +14,8 @@ from symbench.core.config.presets import PRESETS, Preset
 
 # the groups of a Preset, in the order they are shown
 SECTIONS = tuple(f.name for f in fields(Preset) if f.name not in ("name", "description"))
+LABELS_WIDTH = 38  # the section and setting columns, with their borders
+PRESET_WIDTH = 14  # the least a preset's column needs for its values to read as words
 
 
 def presets_doc() -> dict[str, dict[str, Any]]:
@@ -29,6 +31,17 @@ def _cell(value: Any) -> str:
     return str(value)
 
 
+def presets_tables(doc: dict[str, dict[str, Any]], width: int) -> list[Table]:
+    """`presets_table`s of as many presets side by side as `width` columns hold (at least
+    one): squeezed into 80 columns, every value would wrap into a column of one word."""
+    per_table = max(1, (width - LABELS_WIDTH) // PRESET_WIDTH)
+    names = list(doc)
+    return [
+        presets_table({n: doc[n] for n in names[i : i + per_table]})
+        for i in range(0, len(names), per_table)
+    ]
+
+
 def presets_table(doc: dict[str, dict[str, Any]]) -> Table:
     """One column per preset, one row per number, grouped by section (a number a preset
     does not have, such as a grid's axes beside drawn climbs, shows as a blank)."""
@@ -38,7 +51,7 @@ def presets_table(doc: dict[str, dict[str, Any]]) -> Table:
         "from continuous distributions (dataset v7); the budgets below it are not part of it",
     )
     table.add_column("section", style="bold")
-    table.add_column("setting")
+    table.add_column("setting", no_wrap=True)
     for name in doc:
         table.add_column(name, overflow="fold")
     table.add_row("", "description", *(p["description"] for p in doc.values()))
@@ -63,4 +76,6 @@ def presets(as_json: bool) -> None:
     if as_json:
         click.echo(json.dumps(doc, indent=2))
         return
-    StdoutConsole().print(presets_table(doc))
+    console = StdoutConsole()
+    for table in presets_tables(doc, console.width):
+        console.print(table)

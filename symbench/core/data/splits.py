@@ -152,6 +152,7 @@ COLUMNS = {  # the name on the command line: the scenario field
     "seed": "seed",
 }
 ANGLES = ("heading_deg", "yaw_deg")  # compared modulo 360
+MAX_TOKEN = 20  # characters of one value in a column split's name
 _VALUE = re.compile(r"^(m?\d+(\.\d+)?|[a-z]+)$")
 
 
@@ -175,7 +176,9 @@ class ColumnSplit:
 
 
 def _token(value: str, column: str) -> str:
-    """A value as the split's name writes it: a number in its shortest form, or a word."""
+    """A value as the split's name writes it: a number in its shortest exact form (`:g`
+    would write 1e+06, a name that does not parse back, and round to six digits), or a
+    word."""
     text = value.strip()
     if column == "direction":
         if text not in DIRECTIONS:
@@ -189,7 +192,14 @@ def _token(value: str, column: str) -> str:
         raise SymbenchError(f"{column} value '{text}' is not finite")
     if column == "seed" and (number != int(number) or number < 0):
         raise SymbenchError(f"seed value '{text}' is not a whole number >= 0")
-    return f"{number:g}".replace("-", "m")
+    # every digit, no exponent: the name parses back (`_VALUE`) to exactly this number
+    token = np.format_float_positional(number + 0.0, trim="-").replace("-", "m")  # no -0
+    if len(token) > MAX_TOKEN:
+        raise SymbenchError(
+            f"{column} value '{text}' takes {len(token)} characters written out; a split's "
+            f"name, part of its records' file names, allows {MAX_TOKEN} per value"
+        )
+    return token
 
 
 def column_split(column: str, train: Sequence[str], test: Sequence[str]) -> ColumnSplit:

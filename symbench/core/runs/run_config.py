@@ -20,6 +20,7 @@ from symbench.core.plugin.entries import ModelEntry
 from symbench.core.robot.specs import load_robot, registered_robot
 from symbench.core.runs.spec import RunSpec, model_entry, resolve_robot
 from symbench.core.training.backends import get_backend
+from symbench.core.training.buildable import check_buildable
 from symbench.core.training.config import TrainConfig
 from symbench.core.training.sizes import matched_widths
 
@@ -42,7 +43,10 @@ def check_names(spec: RunSpec) -> None:
     preset(spec.preset)
     if spec.workers < 1:
         raise SymbenchError(f"workers must be at least 1, got {spec.workers}")
-    train_config(spec)
+    config = train_config(spec)
+    if spec.sizes:  # set by hand: the network is built once to see that it can be
+        dims = dims_for(entry.view, entry.variant, load_robot(spec.robot).n_legs)
+        check_buildable(entry, dims, config.hyper, dict(spec.sizes))
     resolve_robot(spec.robot, spec.dataset_id)
 
 

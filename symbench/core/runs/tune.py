@@ -5,7 +5,8 @@ The grid is learning rate x width scale: the model's `widths` build keywords (it
 protocol and budgets on the split's training trajectories and is scored by its best
 validation loss (trajectories carved from the training side); the test trajectories are
 never looked at. Trials live in an Optuna journal file, so a search started again skips
-the trials it finished and a trial cut off by a crash is run again. The summary (JSON,
+the trials it finished and a trial cut off by a crash is run again (a damaged journal is
+refused, naming it: `tune_journal`). The summary (JSON,
 rewritten atomically after every trial) names the best trial: a maintainer copies its
 values into a built-in model's defaults (`symbench/plugins/architectures.py` and
 `zoo.py`), a plugin author into their `ModelEntry`.
@@ -25,6 +26,7 @@ from symbench.core.config.provenance import git_commit
 from symbench.core.plugin.entries import ModelEntry
 from symbench.core.runs.run_config import train_config
 from symbench.core.runs.spec import RunSpec, ensure_dataset, model_entry
+from symbench.core.runs.tune_journal import open_study
 from symbench.core.training.checkpoints import write_json
 from symbench.core.training.sizes import scaled_widths
 
@@ -53,6 +55,10 @@ def summary_path(folder: Path, spec: RunSpec) -> Path:
     return Path(folder) / f"{spec.key()}.tune.json"
 
 
+def journal_path(folder: Path, spec: RunSpec) -> Path:
+    return Path(folder) / f"{spec.key()}.journal"
+
+
 def tune(
     spec: RunSpec,
     learning_rates: Sequence[float],
@@ -64,8 +70,6 @@ def tune(
     journal; returns (and writes) the summary with every trial and the best one."""
     import optuna
     from optuna.distributions import BaseDistribution, FloatDistribution
-    from optuna.storages import JournalStorage
-    from optuna.storages.journal import JournalFileBackend
     from optuna.trial import TrialState
 
     from symbench.core.training.loop import train
@@ -82,13 +86,7 @@ def tune(
     train_set, val_set, _ = dataset.split_views(entry.view, entry.variant, spec.split, spec.seed)
     Path(folder).mkdir(parents=True, exist_ok=True)
     optuna.logging.set_verbosity(optuna.logging.WARNING)
-    storage = JournalStorage(JournalFileBackend(str(Path(folder) / f"{spec.key()}.journal")))
-    study = optuna.create_study(
-        study_name=f"{spec.key()}__{dataset.content_hash[:12]}",
-        storage=storage,
-        direction="minimize",
-        load_if_exists=True,
-    )
+    study = open_study(journal_path(folder, spec), f"{spec.key()}__{dataset.content_hash[:12]}")
     for stale in study.get_trials(deepcopy=False, states=(TrialState.RUNNING,)):
         study.tell(stale.number, state=TrialState.FAIL)  # cut off by a crash: run again
     # fixed ranges, not the grid's values: a search started again with a larger grid (more

@@ -21,6 +21,15 @@ class CheckReport:
     metrics: dict[str, float]
     symmetry: tuple[GeneratorCheck, ...] | None = None  # None: not checked
     symmetry_seconds: float = 0.0
+    declared_group: str = ""  # the robot's group as its spec declares it, e.g. C5
+    geometry_group: str = ""  # the group verified: the declared one with the geometry's mirrors
+
+    @property
+    def groups(self) -> str:
+        """The group verified, in words: "C5 declared, D5 from geometry"."""
+        if self.geometry_group == self.declared_group:
+            return f"{self.declared_group} declared, no mirror in the geometry"
+        return f"{self.declared_group} declared, {self.geometry_group} from geometry"
 
     @property
     def torque_within_limit(self) -> bool:
@@ -46,6 +55,9 @@ class CheckReport:
                 "seconds": self.symmetry_seconds,
                 "tolerance": TOLERANCE,
                 "symmetric": self.symmetric,
+                "declared_group": self.declared_group,
+                "geometry_group": self.geometry_group,
+                "groups": self.groups,
                 "generators": [g.to_dict() for g in self.symmetry],
             }
         return out
@@ -72,5 +84,12 @@ def check(
     if seconds > 0:
         symmetry = tuple(check_generators(climb, seconds, rollout, control_period))
     return CheckReport(
-        scenario.to_dict(), rollout.attached, rollout.failure, rollout.metrics, symmetry, seconds
+        scenario.to_dict(),
+        rollout.attached,
+        rollout.failure,
+        rollout.metrics,
+        symmetry,
+        seconds,
+        climb.spec.group.name,
+        climb.spec.geometry_group.name,
     )

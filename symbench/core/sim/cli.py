@@ -125,8 +125,8 @@ def _print_symmetry(report) -> None:
     if report.symmetry is None:
         return
     click.echo(
-        f"  symmetry over {report.symmetry_seconds:g} s, twin under each generator "
-        f"(largest relative error per column, tolerance {TOLERANCE:g}):"
+        f"  symmetry over {report.symmetry_seconds:g} s of {report.groups}: twin under each "
+        f"generator (largest relative error per column, tolerance {TOLERANCE:g}):"
     )
     for g in report.symmetry:
         verdict = "ok" if g.ok else "BROKEN"

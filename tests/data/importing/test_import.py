@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import io
 import json
+import zipfile
 
 import numpy as np
 import pyarrow as pa
@@ -115,6 +117,30 @@ def test_bad_logs_are_refused_with_a_clear_message(home, tmp_path, case):
     with pytest.raises(SymbenchError, match=message):
         import_logs(folder, "bad-logs")
     assert not (home / "datasets" / "bad-logs").exists()  # nothing half-imported
+
+
+def test_an_npz_header_claiming_more_rows_than_the_file_holds_is_refused_naming_it(home, tmp_path):
+    """Before: "internal error: MemoryError: Unable to allocate 7.28 TiB", the file unnamed:
+    numpy allocates what a header claims before reading."""
+    folder = _write_log(tmp_path / "claims", fmt="npz")
+    path = folder / "run.npz"
+    with np.load(path) as npz:
+        arrays = {k: npz[k] for k in npz.files}
+    with zipfile.ZipFile(path, "w") as archive:
+        for name, array in arrays.items():
+            buffer = io.BytesIO()
+            if name == "t":  # 10^12 rows claimed, 20 held
+                header = {"descr": "<f8", "fortran_order": False, "shape": (10**12,)}
+                np.lib.format.write_array_header_1_0(buffer, header)
+                buffer.write(array.tobytes())
+            else:
+                np.lib.format.write_array(buffer, array)
+            archive.writestr(f"{name}.npy", buffer.getvalue())
+    result = CliRunner().invoke(build_cli(), ["data", "import", str(folder), "--id", "claims"])
+    assert error_line(result, 1) == (
+        f"Error: {path}: column 't' claims shape (1000000000000,) (8000000000000 bytes), but "
+        "the file holds 160 bytes for it: a damaged or crafted header"
+    )
 
 
 def test_a_folder_without_import_json_is_explained(home, tmp_path):

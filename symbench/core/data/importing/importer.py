@@ -145,7 +145,10 @@ def prepare_import(folder: Path, dataset_id: str) -> Prepared:
     manifest, entries = read_manifest(folder)
     robot = load_robot(manifest.robot)
     physics_step = robot.control.timestep
-    resample_plan(manifest.record_period_s, RECORD_PERIOD)  # refuses a longer period
+    try:
+        resample_plan(manifest.record_period_s, RECORD_PERIOD)  # refuses a longer period
+    except SymbenchError as error:  # the file to fix, named
+        raise SymbenchError(f"{folder / IMPORT_JSON}: {error}") from None
     plan = ImportPlan(
         folder,
         dataset_id,

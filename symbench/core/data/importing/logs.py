@@ -6,16 +6,14 @@ frame, accelerations derived, unknown columns as 0) and checked like a generated
 from __future__ import annotations
 
 import json
-import zipfile
-import zlib
 from pathlib import Path
 
 import numpy as np
 
 from symbench.core.common.errors import SymbenchError
-from symbench.core.common.jsonfile import one_line
 from symbench.core.data.importing.derive import DERIVABLE, UNKNOWABLE, body_to_world, derivative
 from symbench.core.data.importing.manifest import IMPORT_JSON, ImportManifest
+from symbench.core.data.importing.npz import read_npz
 from symbench.core.data.storage.columns import check_flags, flat_names, legs_in
 from symbench.core.data.storage.files import read_columns
 from symbench.core.sim.raw import COLUMN_NAMES, RAW_COLUMNS, column_shape, validate_raw
@@ -47,14 +45,7 @@ def read_log_file(path: Path, n_legs: int, robot: str) -> tuple[dict[str, np.nda
                 more = f" and {len(missing) - 5} more" if len(missing) > 5 else ""
                 raise SymbenchError(f"{path}: missing column(s) {', '.join(missing[:5])}{more}")
         return arrays, sorted(set(columns) - known)
-    try:
-        with np.load(path, allow_pickle=False) as npz:
-            arrays = {k: npz[k] for k in npz.files}
-    except (OSError, ValueError, EOFError, zipfile.BadZipFile, zlib.error) as exc:
-        raise SymbenchError(
-            f"{path}: not a readable npz file without pickles "
-            f"({one_line(exc) or type(exc).__name__})"
-        ) from None
+    arrays = read_npz(path)
     extra = sorted(k for k in arrays if k not in COLUMN_NAMES)
     arrays = {k: v for k, v in arrays.items() if k in COLUMN_NAMES}
     q = arrays.get("q")
