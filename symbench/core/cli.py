@@ -28,6 +28,7 @@ from symbench.core.common.version import __version__
 from symbench.core.plugin.entries import describe
 from symbench.core.plugin.host import duplicate, get_host
 from symbench.core.plugin.registry import KINDS, collect, names
+from symbench.core.robot.shipped import unshipped
 
 # name -> "module:attribute" of a click command, imported when first used.
 LAZY_COMMANDS: dict[str, str] = {
@@ -129,8 +130,13 @@ def report_plugin_problems(already: int = 0) -> int:
     stderr, without stopping the command; returns how many have been reported."""
     problems = get_host().problems
     for problem in problems[already:]:
-        stderr.print(Text.assemble(("warning:", "yellow"), f" {problem}"), soft_wrap=True)
+        warn(str(problem))
     return len(problems)
+
+
+def warn(message: str) -> None:
+    """One `warning:` line on stderr: the command goes on."""
+    stderr.print(Text.assemble(("warning:", "yellow"), f" {message}"), soft_wrap=True)
 
 
 LIST_KINDS = (*KINDS, "datasets")
@@ -147,6 +153,9 @@ def list_command(kind: str, as_json: bool) -> None:
         rows = [{"name": d} for d in dataset_ids()]
     else:
         rows = [describe(e) for e in collect(kind).values()]
+    if kind == "robots":  # listed, but unusable: say so before anyone generates data
+        for problem in filter(None, map(unshipped, (row["name"] for row in rows))):
+            warn(problem)
     if as_json:
         click.echo(json.dumps(rows, indent=2))
         return
@@ -217,7 +226,7 @@ def build_cli() -> click.Group:
 
 def show_warning(message, category, filename, lineno, file=None, line=None) -> None:
     """Warnings on the command line are one line each (`warning: ...`), like plugin problems."""
-    stderr.print(Text.assemble(("warning:", "yellow"), f" {message}"), soft_wrap=True)
+    warn(str(message))
 
 
 # The exit status of a command whose standard output was closed by its reader (`| head`):

@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 
 import click
+from rich.markup import escape
 from rich.table import Table
 
 from symbench.core.common.cli_types import SEED
@@ -123,12 +124,13 @@ def _print(report: EquivarianceReport) -> None:
     colour = "green" if report.equivariant else ("red" if report.claims else "yellow")
     title = (
         f"{report.model}/{report.backend} on {report.group} ({report.n_legs} legs): "
-        f"[{colour}]{report.verdict}[/]"
+        f"[{colour}]{escape(report.verdict)}[/]"
     )
+    console.print(title, soft_wrap=True)  # the verdict whole on one line, however narrow
     if not report.measured:
-        console.print(f"{title}\n  {report.note}")
+        console.print(f"  {report.note}")
         return
-    table = Table(title=title, title_justify="left")
+    table = Table()
     for col in (
         "element",
         "leg i -> leg",

@@ -109,12 +109,34 @@ class EquivarianceReport:
         """A model that claims no equivariance cannot fail; one that claims it must hold it."""
         return not self.claims or self.equivariant
 
+    def over_tolerance(self) -> list[tuple[ElementError, str]]:
+        """The (element, dtype) pairs over tolerance, furthest over first."""
+        found = [(e, d) for e in self.elements for d in self.tolerances if self._ratio(e, d) > 1]
+        return sorted(found, key=lambda pair: -self._ratio(*pair))
+
+    def _ratio(self, element: ElementError, dtype: str) -> float:
+        return element.errors[dtype] / self.tolerances[dtype]
+
+    def _worst(self) -> str:
+        """' under <element> (...)' of the element furthest over, '' when none is over."""
+        over = self.over_tolerance()
+        if not over:
+            return ""
+        (worst, dtype), others = over[0], len({e.element for e, _ in over}) - 1
+        more = f"; {others} more elements break it" if others else ""
+        return (
+            f" under {worst.element} (legs -> {list(worst.perm)}): {dtype} error "
+            f"{worst.errors[dtype]:.2e} > {self.tolerances[dtype]:g}{more}"
+        )
+
     @property
     def verdict(self) -> str:
+        """One line; a broken claim names the element that breaks it furthest (relative to
+        the tolerance), so that the line alone says where to look."""
+        if self.claims and self.equivariant:
+            return "equivariant"
         if self.claims:
-            return (
-                "equivariant" if self.equivariant else "BROKEN: claims equivariance and breaks it"
-            )
+            return "BROKEN: claims equivariance and breaks it" + self._worst()
         if self.measured and self.equivariant:
             return "equivariant, though it claims no equivariance"
         if self.measured:

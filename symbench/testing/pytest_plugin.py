@@ -9,7 +9,8 @@
 
 `group` may be a `LegGroup` (checked on a regular robot with that many legs) or a registered
 robot's name, e.g. `symbench_robot` (its own group and leg frames). `--symbench-samples N`
-sets the number of raw states per group element. Importing this
+sets the number of raw states per group element of the `symbench_kit` fixture only; a
+directly imported `assert_equivariant` keeps its own `n_samples` (default 32). Importing this
 module imports neither torch nor JAX.
 """
 

@@ -5,6 +5,7 @@ example plugin's files as quoted there, and the complete plugin of CONTRIBUTING.
 from __future__ import annotations
 
 import ast
+import importlib
 import re
 import sys
 import types
@@ -70,11 +71,20 @@ def module_from(code: str, name: str, source: str) -> types.ModuleType:
 
 
 @pytest.fixture(scope="module")
-def plugins() -> dict[str, types.ModuleType]:
-    return {
-        hook: module_from(code, f"example_{hook}", f"writing-plugins.md:{hook}")
-        for hook, code in hook_examples().items()
-    }
+def plugins(tmp_path_factory) -> Iterator[dict[str, types.ModuleType]]:
+    """Each hook's example as the `__init__.py` of a package on sys.path, imported as an
+    installed plugin is, so that what a plugin may do there (`files(__name__)`) works."""
+    root = tmp_path_factory.mktemp("documented_plugins")
+    for hook, code in hook_examples().items():
+        (root / f"example_{hook}").mkdir()
+        (root / f"example_{hook}" / "__init__.py").write_text(code)
+    sys.path.insert(0, str(root))
+    try:
+        yield {hook: importlib.import_module(f"example_{hook}") for hook in HOOKS}
+    finally:
+        sys.path.remove(str(root))
+        for hook in HOOKS:
+            sys.modules.pop(f"example_{hook}", None)
 
 
 def host_with(module: types.ModuleType) -> PluginHost:
@@ -132,6 +142,12 @@ def test_collection_examples_register_an_entry(plugins, hook, kind):
     host = host_with(plugins[hook])
     entries = registry.collect(kind, host)
     assert len(entries) == 1 and host.problems == []
+
+
+def test_robot_example_finds_its_folder_inside_its_package(plugins):
+    (entry,) = registry.collect("robots", host_with(plugins["symbench_robots"])).values()
+    package = Path(plugins["symbench_robots"].__file__).parent
+    assert entry.spec_dir == package / "tripod"
 
 
 def test_evaluator_example_computes_its_metric(plugins):

@@ -4,6 +4,7 @@ foreign ones are refused."""
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import pytest
 
@@ -123,3 +124,10 @@ def test_foreign_schema_version_and_garbage(valid_record, tmp_path):
     (tmp_path / "g.json").write_text("{not json")
     with pytest.raises(SymbenchError, match="cannot read result record"):
         read_record(tmp_path / "g.json")
+
+
+def test_a_published_record_from_before_robot_plugin_still_reads_and_verifies():
+    root = Path(__file__).resolve().parents[2] / "leaderboards" / "records"
+    path = min(root.glob("*.json"))
+    assert "robot_plugin" not in json.loads(path.read_text())
+    assert read_record(path).robot_plugin is None  # and its seal still matches

@@ -156,6 +156,33 @@ def test_refuses_smoke_records(site, valid):
     assert snapshot(site) == before
 
 
+def test_a_dry_run_names_every_refusal_and_writes_nothing(site, valid, sealed):
+    dirty = sealed("dirty", lambda r: r.update(git_commit="1" * 40 + "+dirty"), seed=3)
+    taken = sealed("taken", seed=0, rmse=0.5)  # a different record under a published key
+    before = snapshot(site.parent)
+    said: list[str] = []
+    board = site / "leaderboards"
+    assert publishing.dry_run([*valid, dirty, taken], board, SMOKE, said.append) == 2
+    assert said[:3] == [f"accepted: {path}" for path in valid]
+    assert said[3].startswith(f"refused: {dirty}: made from a working tree")
+    assert said[4].startswith(f"refused: {taken}: a different record for")
+    assert len(said) == 5 and snapshot(site.parent) == before
+    assert publishing.dry_run(valid, board, SMOKE) == 0  # and publish takes them
+    publish(valid, board, presets=SMOKE)
+
+
+def test_a_dry_run_on_the_command_line(site, valid):
+    before = snapshot(site)
+    result = CliRunner().invoke(
+        build_cli(), ["publish", "--dry-run", *map(str, valid), "--to", str(site / "leaderboards")]
+    )
+    assert result.exit_code == 1  # the command line publishes no smoke records
+    said = " ".join(result.output.split())
+    assert said.count("smoke-preset records are not published") == 3
+    assert "publish would refuse these records (3 refusals above)" in said
+    assert snapshot(site) == before
+
+
 def test_refuses_an_edited_metric(site, valid, sealed):
     path = sealed("edited", seed=3)
     path.write_text(path.read_text().replace('"rmse": 0.1', '"rmse": 0.01'))

@@ -15,7 +15,7 @@ from symbench.core.config.presets import dataset_id
 from symbench.core.config.provenance import build_hyperparameters, plugin_info
 from symbench.core.data.dataset import load_dataset
 from symbench.core.plugin import registry
-from symbench.core.runs.results import read_record
+from symbench.core.runs.results import RobotPlugin, read_record
 from symbench.core.runs.runner import RunSpec, run
 
 MODELS = ("sdnn", "sdgnn", "ffnn", "ffnn-leg", "gnn")
@@ -183,6 +183,9 @@ def test_a_record_carries_what_it_takes_to_rerun_it(smoke_home, tmp_path):
         "mirror": 0,
         "ring": 0,
     }
+    assert record.robot_plugin == RobotPlugin(
+        plugin="robots", distribution="symbench", version=symbench.__version__
+    )
     assert record.training.config.model_dump() == {
         "seed": 0,
         "batch_size": 64,

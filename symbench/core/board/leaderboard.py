@@ -36,6 +36,7 @@ from symbench.core.robot.specs import split_variant
 from symbench.core.runs.results import RecordV1, read_display_record
 
 MIN_SEEDS = 3
+RECORDS = "records"  # a board's folder of records, beside its tables
 # (evaluator, metric) pairs shown in the tables when present, with their column names
 COLUMNS = {
     ("torque-error", "rmse"): "rmse_Nm",
@@ -301,7 +302,12 @@ def asymmetry_plot(table: pd.DataFrame, base: str, path: Path) -> bool:
 
 def write_leaderboard(results: Path, out: Path) -> list[Path]:
     """Aggregate the records under `results` into tables and plots under `out`."""
-    table = aggregate(load_records(results))
+    return write_tables(load_records(results), out)
+
+
+def write_tables(records: list[tuple[Path, RecordV1]], out: Path) -> list[Path]:
+    """Aggregate `records` into tables and plots under `out`."""
+    table = aggregate(records)
     written = []
     csv = out / "leaderboard.csv"
     flat = table.drop(columns="per_seed")

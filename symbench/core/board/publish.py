@@ -21,13 +21,12 @@ from collections import defaultdict
 from collections.abc import Callable, Collection, Sequence
 from pathlib import Path
 
-from symbench.core.board.leaderboard import MIN_SEEDS, write_leaderboard
+from symbench.core.board.leaderboard import MIN_SEEDS, RECORDS, write_leaderboard
 from symbench.core.board.publish_checks import RecordChecks
 from symbench.core.common.atomic import replace_folder, staging_folder
 from symbench.core.common.errors import SymbenchError
-from symbench.core.runs.results import ResultRecord, write_record
+from symbench.core.runs.results import ResultRecord, read_record, write_record
 
-RECORDS = "records"
 PUBLISHED_PRESETS = ("small", "transfer", "paper")
 
 
@@ -35,29 +34,47 @@ def _group(r: ResultRecord) -> tuple[str, ...]:
     return (r.dataset.id, r.split, r.model.name, r.model.variant, r.model.backend)
 
 
-def check_merge(
+def merge_problems(
     published: list[tuple[Path, ResultRecord]], incoming: list[tuple[Path, ResultRecord]]
-) -> None:
-    """Refuse a different record under a published key, or a group left with too few seeds."""
+) -> list[tuple[Path, str]]:
+    """Every incoming record the merge refuses, with the reason: a different record under a
+    published key (first, in the order of `incoming`), then a group left with too few seeds."""
     merged = {r.key(): r for _, r in published}
+    problems = []
     for path, record in incoming:
         old = merged.get(record.key())
         if old is not None and old != record:
-            raise SymbenchError(
-                f"{path}: a different record for {record.key()} is already "
-                "published; remove it from the board's records first"
+            problems.append(
+                (
+                    path,
+                    f"a different record for {record.key()} is already published; remove it "
+                    "from the board's records first",
+                )
             )
-        merged[record.key()] = record
+        else:
+            merged[record.key()] = record
     seeds: dict[tuple, set[int]] = defaultdict(set)
     for record in merged.values():
         seeds[_group(record)].add(record.seed)
     for path, record in incoming:
         count = len(seeds[_group(record)])
         if count < MIN_SEEDS:
-            raise SymbenchError(
-                f"{path}: {' / '.join(_group(record))} would have {count} "
-                f"seed(s); publish at least {MIN_SEEDS} seeds of a run together"
+            problems.append(
+                (
+                    path,
+                    f"{' / '.join(_group(record))} would have {count} seed(s); publish at "
+                    f"least {MIN_SEEDS} seeds of a run together",
+                )
             )
+    return problems
+
+
+def check_merge(
+    published: list[tuple[Path, ResultRecord]], incoming: list[tuple[Path, ResultRecord]]
+) -> None:
+    """Refuse a different record under a published key, or a group left with too few seeds."""
+    for path, reason in merge_problems(published, incoming)[:1]:
+        raise SymbenchError(f"{path}: {reason}")
 
 
 def verify_sample(paths: Sequence[Path], n: int, seed: int, report: Callable[[str], None]) -> None:
@@ -91,6 +108,35 @@ def swap_in(board: Path, build: Callable[[Path], list[Path]]) -> list[Path]:
     except BaseException:
         shutil.rmtree(staging, ignore_errors=True)
         raise
+
+
+def dry_run(
+    paths: Sequence[Path],
+    board: Path,
+    presets: Collection[str] = PUBLISHED_PRESETS,
+    report: Callable[[str], None] = lambda message: None,
+) -> int:
+    """What `publish` would say of each of `paths`, writing nothing: accepted, or refused
+    with every reason publish could give (its checks, then the merge with the board: a
+    different record under a published key, a group left with too few seeds). The board's
+    own records are read (sealed), not checked again: only the incoming ones are. Returns
+    the number of refusals (0: publish would take them all)."""
+    checks = RecordChecks(presets)
+    checked, refusals = [], []
+    for path in map(Path, paths):
+        try:
+            checked.append((path, checks.check(path)))
+        except SymbenchError as exc:
+            refusals.append(str(exc))
+    published = [(p, read_record(p)) for p in sorted((Path(board) / RECORDS).glob("*.json"))]
+    problems = merge_problems(published, checked)
+    refusals += [f"{path}: {reason}" for path, reason in problems]
+    merge_refused = {path for path, _ in problems}
+    for path in (path for path, _ in checked if path not in merge_refused):
+        report(f"accepted: {path}")
+    for reason in refusals:
+        report(f"refused: {reason}")
+    return len(refusals)
 
 
 def publish(

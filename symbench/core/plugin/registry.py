@@ -12,7 +12,13 @@ from typing import Any, NamedTuple
 
 from symbench.core.common.errors import SymbenchError, UnknownNameError, lookup
 from symbench.core.plugin.entries import EvaluatorEntry, ModelEntry, RobotEntry, SplitEntry
-from symbench.core.plugin.host import PluginHost, PluginProblem, duplicate, get_host
+from symbench.core.plugin.host import (
+    PluginHost,
+    PluginInfo,
+    PluginProblem,
+    duplicate,
+    get_host,
+)
 
 KINDS = {
     "models": ("symbench_models", ModelEntry),
@@ -53,9 +59,8 @@ def registrations(kind: str, host: PluginHost | None = None) -> list[Registratio
     return found
 
 
-def collect(kind: str, host: PluginHost | None = None) -> dict[str, Any]:
-    """All entries of one kind by key; a key registered twice is an error naming both."""
-    host = host or get_host()
+def _registered(kind: str, host: PluginHost) -> dict[str, Registration]:
+    """Every registration of one kind by key; a key registered twice is an error naming both."""
     table: dict[str, Registration] = {}
     for reg in registrations(kind, host):
         if reg.key in table:
@@ -66,7 +71,22 @@ def collect(kind: str, host: PluginHost | None = None) -> dict[str, Any]:
                 str(host.info[reg.plugin]),
             )
         table[reg.key] = reg
+    return table
+
+
+def collect(kind: str, host: PluginHost | None = None) -> dict[str, Any]:
+    """All entries of one kind by key; a key registered twice is an error naming both."""
+    table = _registered(kind, host or get_host())
     return {key: table[key].entry for key in sorted(table)}
+
+
+def provider(kind: str, key: str, host: PluginHost | None = None) -> PluginInfo:
+    """The plugin that registered `key` of `kind` (entry point, distribution, version): what a
+    record names so that the same code can be installed again, and what a problem of the
+    entry (a robot folder a wheel left out) is blamed on."""
+    host = host or get_host()
+    registration: Registration = _find(kind[:-1], key, _registered(kind, host), host)
+    return host.info[registration.plugin]
 
 
 def names(host: PluginHost | None = None) -> list[dict[str, str]]:

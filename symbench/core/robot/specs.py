@@ -381,8 +381,12 @@ def load_robot(name: str) -> RobotSpec:
     """The registered robot `name` (through the symbench_robots hook), or an approximately
     symmetric variant of one (`<robot>-asym-<A>`)."""
     from symbench.core.plugin import registry
+    from symbench.core.robot.shipped import unshipped
 
     base, asymmetry = split_variant(name)
+    problem = unshipped(base)
+    if problem:
+        raise SymbenchError(problem)
     raw, path = _read_toml(registry.robot(base).spec_dir)
     if asymmetry:
         raw = {**raw, "name": name, "asymmetry": {"leg0_heavier": asymmetry}}

@@ -76,6 +76,15 @@ class PluginInfo(_Strict):
     source_sha256: Sha256 = Field(description="SHA-256 over the plugin package's *.py files")
 
 
+class RobotPlugin(_Strict):
+    """Which plugin registered the robot, so that the same spec can be installed again (its
+    content is the dataset's `robot_spec_hash`): a built-in robot's is symbench's."""
+
+    plugin: str = Field(description="the entry point (or in-process name) of the plugin")
+    distribution: str = Field(description="the installed distribution shipping that plugin")
+    version: str
+
+
 class ModelInfoV1(_Strict):
     name: Identifier
     backend: Literal["torch", "jax"]
@@ -196,6 +205,9 @@ class RecordBody(RecordV1):
     schema_version: Literal[2] = RECORD_SCHEMA_VERSION  # type: ignore[assignment]  # narrows v1
     model: ModelInfo
     training: TrainingInfo
+    robot_plugin: RobotPlugin | None = Field(
+        default=None, description="records from before it was recorded leave it out"
+    )
 
     def protocol(self) -> Protocol:
         return self.training.config.protocol

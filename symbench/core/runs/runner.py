@@ -25,6 +25,8 @@ from symbench.core.config.provenance import (
     plugin_info,
 )
 from symbench.core.data.dataset import Dataset
+from symbench.core.plugin import registry
+from symbench.core.robot.specs import split_variant
 from symbench.core.runs.evaluation import run_evaluators
 from symbench.core.runs.identity import check_replaceable
 from symbench.core.runs.planning import evaluation_context, planned_trainings
@@ -33,6 +35,7 @@ from symbench.core.runs.results import (
     ModelInfo,
     RecordBody,
     ResultRecord,
+    RobotPlugin,
     SampleCounts,
     TrainingInfo,
     write_record,
@@ -85,6 +88,12 @@ def run(spec: RunSpec, on_stage: Callable[[str], None] = _quiet) -> ResultRecord
     return write_record(record, spec.record_path)
 
 
+def robot_plugin(robot: str) -> RobotPlugin:
+    """The plugin that registered `robot` (a variant's: its robot's), as a record names it."""
+    info = registry.provider("robots", split_variant(robot)[0])
+    return RobotPlugin(plugin=info.name, distribution=info.distribution, version=info.version)
+
+
 def record_body(
     spec: RunSpec,
     dataset: Dataset,
@@ -122,6 +131,7 @@ def record_body(
             }
         ),
         robot=spec.robot,
+        robot_plugin=robot_plugin(spec.robot),
         dataset=DatasetInfo.model_validate(
             {
                 "id": dataset.id,

@@ -38,12 +38,17 @@ __all__ = ["build_site"]
 
 
 def build_site(
-    results: Path, out: Path, board: Path = Path("leaderboards"), clips: Path | None = None
+    results: Path,
+    out: Path,
+    board: Path = Path("leaderboards"),
+    clips: Path | None = None,
+    records: list[tuple[Path, RecordV1]] | None = None,
 ) -> list[Path]:
-    """Build the site of the records under `results` into `out`; entry pages say whether
-    the published `board` holds each record; with `clips`, the results folder whose
-    checkpoints the clips load, board pages show them. Returns the files written, sorted."""
-    records = load_records(results)
+    """Build the site of the records under `results` (or of `records`, when given: one's own
+    with other boards', `included.with_boards`) into `out`; entry pages say whether the
+    published `board` holds each record; with `clips`, the results folder whose checkpoints
+    the clips load, board pages show them. Returns the files written, sorted."""
+    records = load_records(results) if records is None else records
     table = aggregate(records)
     planned = None if clips is None else clip_plan(table, records, clips)
     _check_replaceable(out)

@@ -10,8 +10,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from symbench.core.board.leaderboard import protocol_of
-from symbench.core.board.publish import RECORDS
+from symbench.core.board.leaderboard import RECORDS, protocol_of
 from symbench.core.board.site.reproduce import run_command, verify_command
 from symbench.core.common.errors import SymbenchError
 from symbench.core.runs.results import RecordV1, read_display_record, read_record
