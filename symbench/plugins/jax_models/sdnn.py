@@ -12,7 +12,7 @@ import jax.numpy as jnp
 
 from symbench.plugins.architectures import SDNN as DEFAULTS
 from symbench.plugins.architectures import as_tuples, builder, check_ring, mirror_signs
-from symbench.plugins.jax_models.layers import LatentMLP, mirror_average
+from symbench.plugins.jax_models.layers import Dense, LatentMLP, mirror_average
 
 
 class SDNN(nn.Module):
@@ -31,14 +31,12 @@ class SDNN(nn.Module):
         the cyclic shifts only)."""
         h = LatentMLP(self.latent, self.mlp_layers, name="enc")(x)
         for k in range(self.steps):
-            seen = [h, jnp.broadcast_to(h.sum(axis=1, keepdims=True), h.shape)]
+            seen = [h, h.sum(axis=1, keepdims=True)]  # the sum: once per robot, not per leg
             if self.ring:
                 seen += [jnp.roll(h, -1, axis=1), jnp.roll(h, 1, axis=1)]
-            h = h + LatentMLP(self.latent, self.mlp_layers, name=f"proc{k}")(
-                jnp.concatenate(seen, axis=-1)
-            )
+            h = h + LatentMLP(self.latent, self.mlp_layers, name=f"proc{k}")(*seen)
         h = LatentMLP(self.latent, self.mlp_layers, name="dec")(h)
-        return nn.Dense(3, name="out")(h)
+        return Dense(3, name="out")(h)
 
 
 build = builder(

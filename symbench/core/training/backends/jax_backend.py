@@ -8,8 +8,19 @@ CPU computations run inline in the calling thread unless JAX_CPU_ENABLE_ASYNC_DI
 otherwise: handing a batch-1 prediction to a worker thread and waiting for it doubled the
 control-loop latency on the shared 2-core machine (sdnn on hexa: 60 -> 32 us). Training, one
 jitted scan per epoch, ran at the same rate both ways, measured alternately side by side
-(sdnn 13.9-16.5k samples/s). The setting takes effect when JAX creates its CPU client, i.e.
-when this module is imported before any JAX computation.
+(sdnn 13.9-16.5k samples/s, before the change below). The setting takes effect when JAX
+creates its CPU client, i.e. when this module is imported before any JAX computation.
+
+Where a training step's time went (XLA profile, hexa, batch 64): the kernels' gradients,
+dots over the batch axis that XLA ran in Eigen at a third of YNNPACK's speed, 45 % of sdnn's
+step and a third of gnn's; jax_models/layers.py's `Dense` now hands them to YNNPACK, and
+multiplies concatenated inputs part by part (sdnn's leg sum once per sample). Measured side
+by side in one process on one core (median of 25 alternating epochs): ffnn 76k -> 88k
+samples/s, ffnn-leg 72k -> 81k, gnn 3.4k -> 3.8k, sdgnn 21k -> 23k, sdnn 8.8k -> 13.2k.
+A batch-1 sdnn prediction stays at ~39 us although its computation fell from ~33 to ~19 us
+(200 forwards in one lax.map): a call to an executable with a YNNPACK dot costs ~19 us
+before any work (one 6x128x128 dot: 21 us per call, 2.3 us in a loop; a trivial jitted
+function 7 us), and routing the dots elsewhere (Eigen) was slower (45 vs 33 us).
 """
 
 from __future__ import annotations
