@@ -130,15 +130,16 @@ def aggregate(records: list[tuple[Path, RecordV1]]) -> pd.DataFrame:
     by seed (for the plots' dots, the bands and the aggregate across robots)."""
     check_consistent(records)
     runs = pd.DataFrame([_flat(r) for _, r in records])
-    duplicate = runs.duplicated(
-        ["dataset", "protocol", "split", "model", "variant", "backend", "seed"]
-    )
+    run = ["dataset", "protocol", "split", "model", "variant", "backend", "seed"]
+    duplicate = runs.duplicated(run, keep=False)
     if duplicate.any():
         first = runs[duplicate].iloc[0]
+        same = (runs[run] == first[run]).all(axis=1)
+        files = " and ".join(str(p) for (p, _), s in zip(records, same) if s)
         raise SymbenchError(
-            f"two records for the same run: {first['dataset']} {first['protocol']} "
-            f"{first['split']} "
-            f"{first['model']} {first['variant']} {first['backend']} seed {first['seed']}"
+            f"two records for the same run ({first['dataset']} {first['protocol']} "
+            f"{first['split']} {first['model']} {first['variant']} {first['backend']} "
+            f"seed {first['seed']}): {files}; keep one"
         )
     # robot and preset follow from the dataset (one content, one preset per id)
     keys = ["robot", "dataset", "preset", "protocol", "split", "model", "variant", "backend"]
