@@ -191,7 +191,7 @@ def test_complete_split_example_tests_on_the_steepest_slopes():
         entry.assign(split_context([90.0] * 6))
 
 
-@pytest.mark.parametrize("name", ["__init__.py", "leg_attention.py"])
+@pytest.mark.parametrize("name", ["__init__.py", "leg_attention.py", "leg_attention_flax.py"])
 def test_the_example_plugin_is_quoted_as_it_is(name):
     path = f"examples/symbench-example-plugin/symbench_example_plugin/{name}"
     quoted = re.search(

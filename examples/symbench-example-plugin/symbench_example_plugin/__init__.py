@@ -1,6 +1,7 @@
-"""An example symbench plugin: registers one model, `leg-attention`, for the torch backend.
+"""An example symbench plugin: registers one model, `leg-attention`, for both backends
+(PyTorch in `leg_attention`, Flax in `leg_attention_flax`).
 
-The hook returns plain entries; torch is imported only when the network is built.
+The hook returns plain entries; torch or JAX is imported only when a network is built.
 """
 
 from symbench import Lazy, ModelEntry, hookimpl
@@ -19,5 +20,16 @@ def symbench_models() -> list:
             learning_rate=5e-4,
             description="per-leg MLP, self-attention across legs, per-leg decoder",
             widths=("latent",),  # what `symbench tune` scales (the heads must divide it)
-        )
+        ),
+        ModelEntry(
+            name="leg-attention",  # one name, one entry per backend
+            backend="jax",
+            view="leg_grouped",
+            variant="acc",
+            equivariant=True,
+            build=Lazy("symbench_example_plugin.leg_attention_flax:build"),
+            learning_rate=5e-4,
+            description="per-leg MLP, self-attention across legs, per-leg decoder (Flax)",
+            widths=("latent",),
+        ),
     ]
