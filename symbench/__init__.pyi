@@ -53,6 +53,7 @@ from .core.data.symmetry.raw_action import (
 )
 from .core.data.symmetry.overlap import split_overlap as split_overlap
 from .core.sim.scene.scenario import Scenario as Scenario
+from .core.sim.scene.push import Push as Push
 from .core.sim.climb.rollout import simulate as simulate
 from .core.sim.tracking.learned_control import (
     track as track,
@@ -66,6 +67,7 @@ from .core.board.plots import sample_efficiency_png as sample_efficiency_png
 from .core.sim.tracking.references import (
     held_out_scenarios as held_out_scenarios,
     reference_scenarios as reference_scenarios,
+    reference_push as reference_push,
     oracle_policy as oracle_policy,
     model_jobs as model_jobs,
 )

@@ -50,4 +50,14 @@ def tracked_to_the_end(scenario) -> SimpleNamespace:
         base_drift_m=0.0,
         base_drift_deg=0.0,
         failure=None,
+        tracking_cost=0.0,
+    )
+
+
+def without_open_loop(monkeypatch) -> None:
+    """The closed loop's open-loop error skipped (0 per reference): a stand-in dataset has
+    no rows to build the model's view from."""
+    monkeypatch.setattr(
+        "symbench.core.runs.closed_loop.ClosedLoopSetup.open_loop_rmse",
+        lambda self, predict, view, references: [0.0] * len(references),
     )

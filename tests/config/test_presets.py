@@ -11,7 +11,12 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 from cli_invoke import error_line, invoke
-from stand_ins import closed_loop_dataset, tracked_to_the_end, trained_on_split
+from stand_ins import (
+    closed_loop_dataset,
+    tracked_to_the_end,
+    trained_on_split,
+    without_open_loop,
+)
 
 from symbench.core.common.errors import SymbenchError, UnknownNameError
 from symbench.core.config.cli import SECTIONS, _cell
@@ -41,8 +46,20 @@ from symbench.plugins.splits import symbench_splits
 SMOKE_TRAINING = Training(max_steps=30, eval_every=10, patience=2, max_epochs=3)
 SMALL_TRAINING = Training(max_steps=10000, eval_every=500, patience=6, max_epochs=60)
 BUDGETS = {
-    "smoke": {"training": SMOKE_TRAINING, "horizon_s": 1.0, "references": 2, "grid_seconds": 1.0},
-    "small": {"training": SMALL_TRAINING, "horizon_s": 2.0, "references": 6, "grid_seconds": 2.0},
+    "smoke": {
+        "training": SMOKE_TRAINING,
+        "horizon_s": 1.0,
+        "references": 2,
+        "grid_seconds": 1.0,
+        "push_n": 100.0,
+    },
+    "small": {
+        "training": SMALL_TRAINING,
+        "horizon_s": 2.0,
+        "references": 32,
+        "grid_seconds": 2.0,
+        "push_n": 100.0,
+    },
     "transfer": {
         "training": SMALL_TRAINING,
         "horizon_s": 2.0,
@@ -62,12 +79,14 @@ BUDGETS = {
         "horizon_s": 1.0,
         "references": 2,
         "grid_seconds": 1.0,
+        "push_n": 100.0,
     },
     "small-noisy": {
         "training": SMALL_TRAINING,
         "horizon_s": 2.0,
-        "references": 6,
+        "references": 32,
         "grid_seconds": 2.0,
+        "push_n": 100.0,
     },
 }
 # the closed loop trains on these presets' datasets (data for control)
@@ -122,11 +141,31 @@ def test_the_budgets_are_those_of_the_published_board():
             pd_fractions=(0.0, 0.1, 0.3, 1.0),
             headline_pd=0.1,
             train_preset=TRAIN_PRESETS[name],
+            push_n=budget.get("push_n", 0.0),
+            push_s=0.1,
         )
         assert p.closed_loop.seconds == p.dataset.seconds  # the horizon: a whole climb
         assert p.dataset.seconds == budget["grid_seconds"]
         assert p.evaluation == Evaluation(max_samples=4096, invariance_trials=4)
         assert p.sample_efficiency == SampleEfficiency(fractions=(0.1, 0.25, 0.5, 0.75))
+
+
+def test_the_v6_closed_loop_is_the_published_v6_boards():
+    """v6 records keep meaning what they meant: 6 unpushed references (8 on paper) over
+    2.6 s climbs (10 s), trained on v6's own noisy data where there is one."""
+    v6 = {
+        "smoke@v6": (1.0, 2, "smoke-noisy@v6"),
+        "small@v6": (2.6, 6, "small-noisy@v6"),
+        "transfer@v6": (2.6, 6, None),
+        "paper@v6": (10.0, 8, None),
+        "smoke-noisy@v6": (1.0, 2, "smoke-noisy@v6"),
+        "small-noisy@v6": (2.6, 6, "small-noisy@v6"),
+    }
+    assert list(LEGACY_PRESETS) == list(v6)
+    for name, (seconds, references, train) in v6.items():
+        loop = LEGACY_PRESETS[name].closed_loop
+        assert loop == ClosedLoop(seconds, references, (0.0, 0.1, 0.3, 1.0), 0.1, train)
+        assert loop.push_n == 0.0
 
 
 def test_the_stored_grid_holds_the_grid_and_no_budget():
@@ -202,6 +241,8 @@ def test_presets_json_is_every_preset_with_every_number():
         "pd_fractions": [0.0, 0.1, 0.3, 1.0],
         "headline_pd": 0.1,
         "train_preset": "smoke-noisy",
+        "push_n": 100.0,
+        "push_s": 0.1,
     }
     assert shown["small"]["sample_efficiency"] == {"fractions": [0.1, 0.25, 0.5, 0.75]}
     assert shown["paper"]["dataset"]["inclinations_deg"] == [45.0, 135.0]
@@ -295,14 +336,15 @@ def test_closed_loop_tracks_the_presets_references_over_its_horizon(
 ):
     simulated, tracked = [], []
 
-    def simulate(scenario, record_period):
+    def simulate(scenario, record_period, push=None):
         assert record_period == 0.001  # every physics step
+        assert push is None  # the budget below pushes not
         simulated.append(scenario)
         steps = int(round(scenario.seconds / 0.001))
         arrays = {"t": 0.001 * np.arange(steps), "tau": np.zeros((steps, 6, 3))}
         return SimpleNamespace(attached=True, arrays=arrays)
 
-    def track(scenario, reference, policy, pd, observe=None):
+    def track(scenario, reference, policy, pd, observe=None, push=None):
         tracked.append(pd)
         return tracked_to_the_end(scenario)
 
@@ -313,6 +355,7 @@ def test_closed_loop_tracks_the_presets_references_over_its_horizon(
     monkeypatch.setattr("symbench.core.sim.climb.rollout.simulate", simulate)
     monkeypatch.setattr("symbench.core.runs.closed_loop.track", track)
     monkeypatch.setattr("symbench.core.runs.closed_loop.track_batch", track_batch)
+    without_open_loop(monkeypatch)
     budget = ClosedLoop(
         seconds=0.05, references=references, pd_fractions=(0.0, 0.5), headline_pd=0.5
     )

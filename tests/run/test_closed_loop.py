@@ -9,10 +9,14 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
+from symbench.core.data import load_dataset
 from symbench.core.robot.specs import load_robot
 from symbench.core.runs.runner import RunSpec, run
 from symbench.core.sim.scene.scenario import Scenario
 from symbench.core.sim.tracking.learned_control import expert_reference, track
+from symbench.core.training.checkpoints import checkpoint_sha256
+from symbench.core.training.resume import BEST_DIR
+from symbench.core.training.trained_model import TENSORS, TrainedModel
 from symbench.plugins.evaluators.closed_loop import held_out_scenarios
 
 ROBOTS = ("magneto", "hexa", "nona")
@@ -99,6 +103,20 @@ def test_the_oracle_holds_and_the_pd_alone_does_not(smoke_climb):
     assert floor.time_to_failure_s < oracle.time_to_failure_s
 
 
+def test_the_tracking_cost_grows_with_the_error(smoke_climb):
+    """The feedforward's error scaled up step by step: the tracking cost rises with it, from
+    the oracle's (0) to the PD alone's (near 1: it falls early)."""
+    scenario, ref = smoke_climb
+    gains = _gains(scenario.robot, HEADLINE)
+    oracle = _oracle(ref)
+    costs = [
+        track(scenario, ref, lambda rows, s=scale: s * oracle(rows), gains).tracking_cost
+        for scale in (1.0, 0.97, 0.9, 0.0)
+    ]
+    assert costs[0] < 1e-9 and costs == sorted(costs) and len(set(costs)) == 4
+    assert 0.5 < costs[-1] <= 1.0
+
+
 def test_a_batch_tracks_each_job_as_alone(smoke_climb):
     """In lockstep, jobs that fall at once (PD alone, no gains), later (PD alone at the
     headline) and never (the oracle) each come out exactly as tracked alone: the shared
@@ -160,6 +178,27 @@ def test_closed_loop_evaluator_in_a_run(smoke_home, tmp_path):
     assert metrics["expert_success_rate"] == 1.0
     score = metrics["pd_normalized_score"]
     assert score is not None and score < 1.0  # two epochs: nowhere near the oracle
+    # the continuous score, per reference and over them
+    tracking = metrics["pd_tracking_score"]
+    low, high = metrics["pd_tracking_score_ci95"]
+    assert tracking < 1.0 and low <= tracking <= high
+    assert metrics["pd_oracle_tracking_cost"] < 1e-9 < metrics["pd_floor_tracking_cost"] <= 1.0
+    per_reference = metrics["per_reference"]
+    assert len(per_reference) == metrics["references"]
+    for item in per_reference:  # every reference pushed as the preset says
+        assert item["push"]["duration_s"] == 0.1 and item["open_loop_torque_rmse"] > 0.0
+        assert set(item["by_pd_fraction"]) == {"0.0", "0.1", "0.3", "1.0"}
+    # which network it judged: the `next` model trained on the noisy data, as saved
+    judged = metrics["judged"]
+    noisy = load_dataset("hexa-climb-smoke-noisy-v7")
+    assert judged["dataset"] == metrics["trained_on"]
+    assert judged["dataset_content_hash"] == noisy.content_hash
+    assert (judged["split"], judged["variant"], judged["seed"]) == ("iid", "next", 0)
+    saved = TrainedModel.load(folders[0] / BEST_DIR)
+    assert judged["checkpoint_sha256"] == checkpoint_sha256(folders[0] / BEST_DIR / TENSORS)
+    assert judged["steps"] == saved.steps == 20 and judged["stopped_by"] == saved.stopped_by
+    assert judged["stop_reason"] == saved.stopped
+    assert judged["open_loop_torque_rmse"] > 0.0
 
 
 def test_the_calibration_is_measured_once_per_output_folder(smoke_home, tmp_path):

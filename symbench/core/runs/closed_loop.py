@@ -7,14 +7,19 @@ closed_loop.py, through the public API as `symbench.ClosedLoopSetup`) and the le
 site's clips (symbench/core/board/site/clips.py). It owns
 
 - the references: the scenario fields of up to `references` held-out test climbs from
-  distinct symmetry orbits (`reference_scenarios`), and the expert's climb of each recorded
-  at every physics step (None where the expert itself fell);
+  distinct symmetry orbits (`reference_scenarios`), the push each is climbed with (`push`,
+  drawn from the scenario: the preset's `push_n` newtons in the surface plane for `push_s`,
+  none on the v6 presets), and the expert's climb of each, pushed, recorded at every
+  physics step (None where the expert itself fell); every row tracking a reference is pushed
+  alike;
 - the PD gains: fractions of the robot's servo gains (Kp, Kd), the preset's `pd_fractions`
   and its headline one;
 - the calibration, which does not depend on the model: the `oracle` (the expert's recorded
   torques replayed, at the headline fraction: on the reference the PD vanishes, so it is
   the same at every fraction) and the `floor` (zero feedforward: the PD alone) at every
   fraction, kept in a cache folder when one is given, so a sweep measures it once;
+- the model's open-loop error on the references (`open_loop_rmse`: its torques against the
+  expert's on the references' rows every 6 ms, as in its test set);
 - the model's rollouts: its policy (`feedforward_policy`) and the jobs of one batch
   (`model_jobs`: every reference at every fraction, fractions inner), run in lockstep by
   `track_batch`. A model's torques may round differently in another batch, so whoever
@@ -37,18 +42,27 @@ import numpy as np
 from symbench.core.common.atomic import write_bytes_atomic
 from symbench.core.common.version import __version__
 from symbench.core.config.presets import ClosedLoop
+from symbench.core.data.views.transforms import build_view
 from symbench.core.runs.control_policy import feedforward_policy
+from symbench.core.runs.evaluation import rmse
+from symbench.core.sim.scene.push import Push
 from symbench.core.sim.scene.scenario import Scenario
 from symbench.core.sim.tracking.learned_control import (
+    LOOKAHEAD_S,
     BatchPolicy,
     Observer,
     Tracking,
     track,
     track_batch,
 )
-from symbench.core.sim.tracking.references import model_jobs, oracle_policy, reference_scenarios
+from symbench.core.sim.tracking.references import (
+    model_jobs,
+    oracle_policy,
+    reference_push,
+    reference_scenarios,
+)
 
-CACHE_VERSION = 1  # bump when what is cached, or how it is measured, changes
+CACHE_VERSION = 2  # bump when what is cached, or how it is measured, changes
 
 Reference = tuple[Scenario, dict[str, np.ndarray]]  # a scenario, the expert's climb of it
 
@@ -103,13 +117,18 @@ class ClosedLoopSetup:
             self.dataset.spec.group.rotation_order,
         )
 
+    def push(self, scenario: Scenario) -> Push | None:
+        """The push `scenario` is climbed and tracked with (None: the preset pushes not)."""
+        return reference_push(scenario, self.budget.push_n, self.budget.push_s)
+
     def expert(self, fields: dict[str, Any]) -> Reference | None:
-        """The expert's climb of `fields` recorded at every physics step (what `track`
-        needs), or None when the expert fell: no reference to track."""
+        """The expert's climb of `fields`, pushed, recorded at every physics step (what
+        `track` needs), or None when the expert fell: no reference to track."""
         from symbench.core.sim.climb.rollout import simulate
 
         scenario = Scenario.from_dict(fields)
-        reference = simulate(scenario, record_period=self.dataset.spec.control.timestep)
+        timestep = self.dataset.spec.control.timestep
+        reference = simulate(scenario, record_period=timestep, push=self.push(scenario))
         return (scenario, reference.arrays) if reference.attached else None
 
     @cached_property
@@ -123,7 +142,8 @@ class ClosedLoopSetup:
         """The expert's recorded torques replayed at the headline fraction: its climb again,
         to rounding; `observe` sees the physics after every step."""
         policy = oracle_policy(reference)
-        return track(scenario, reference, policy, self.gains(self.headline), observe=observe)
+        gains, push = self.gains(self.headline), self.push(scenario)
+        return track(scenario, reference, policy, gains, observe=observe, push=push)
 
     def floor(self, scenario: Scenario, reference: dict[str, np.ndarray]) -> dict[float, Tracking]:
         """The PD alone (zero feedforward) at every fraction."""
@@ -131,7 +151,10 @@ class ClosedLoopSetup:
         def zero(rows: dict[str, np.ndarray]) -> np.ndarray:
             return np.zeros_like(reference["tau"][0])
 
-        return {f: track(scenario, reference, zero, self.gains(f)) for f in self.fractions}
+        push = self.push(scenario)
+        return {
+            f: track(scenario, reference, zero, self.gains(f), push=push) for f in self.fractions
+        }
 
     def calibration(self, cache: Path | None = None) -> list[Calibrated | None]:
         """Per reference scenario: None where the expert fell, else its reference with the
@@ -169,6 +192,26 @@ class ClosedLoopSetup:
         batch policy of `track_batch`."""
         return feedforward_policy(predict, self.dataset.frames, view)
 
+    def open_loop_rmse(
+        self,
+        predict: Callable[[dict[str, np.ndarray]], np.ndarray],
+        view: str,
+        references: list[Reference],
+    ) -> list[float]:
+        """Per reference, the model's torque RMSE (N m) against the expert's on the
+        reference's rows every LOOKAHEAD_S (the record period its `next` variant was
+        trained on: for an unpushed climb the dataset's very rows): its open-loop test error
+        on the climbs it tracks, beside how it tracks them."""
+        out = []
+        for _, reference in references:
+            dt = float(reference["t"][1] - reference["t"][0])
+            every = max(1, int(round(LOOKAHEAD_S / dt)))
+            rows = {c: column[::every] for c, column in reference.items()}
+            ids = np.zeros(len(rows["t"]), dtype=np.int64)
+            arrays = build_view(rows, ids, self.dataset.frames, view, "next")
+            out.append(float(rmse(predict(arrays.inputs), arrays.target)))
+        return out
+
     def job(self, reference: int, fraction: float) -> int:
         """The index, in `track_model`'s batch, of reference `reference` at `fraction`."""
         return reference * len(self.fractions) + self.fractions.index(fraction)
@@ -183,7 +226,8 @@ class ClosedLoopSetup:
         """The model's rollouts, the evaluator's measurement: every reference at every
         fraction (fractions inner, see `job`) in one lockstep batch; `observers` by job
         index see the physics of theirs."""
-        jobs = model_jobs(references, self.fractions, self.servo_gains)
+        pushes = [self.push(scenario) for scenario, _ in references]
+        jobs = model_jobs(references, self.fractions, self.servo_gains, pushes)
         for i, observe in (observers or {}).items():
             jobs[i] = replace(jobs[i], observe=observe)
         return track_batch(jobs, self.policy(predict, view))
@@ -200,6 +244,7 @@ class ClosedLoopSetup:
             "pd_fractions": list(self.fractions),
             "oracle_pd_fraction": self.headline,
             "servo_gains": list(self.servo_gains),
+            "push": [self.budget.push_n, self.budget.push_s],
         }
 
     def _cache_name(self) -> str:

@@ -54,12 +54,16 @@ RAW_COLUMNS = ("base_pos", "base_quat", "base_linvel", "base_angvel", "base_lina
 
 @dataclass(frozen=True)
 class TrainedOnSplit:
-    """A model of the same architecture trained on some split and variant, with its test set."""
+    """A model of the same architecture trained on some split and variant, with its test set
+    and, for a retrained one, which network it is (`provenance`: its data's id and content
+    hash, its checkpoint's hash, steps and why training stopped; empty for the run's own
+    model, which the record's `training` section describes)."""
 
     split: str
     variant: str
     predict: Predict
     test: ViewArrays
+    provenance: Mapping[str, Any] = field(default_factory=dict)
 
 
 @dataclass

@@ -54,14 +54,16 @@ class TrainingJob:
 
 def fit(
     spec: RunSpec, dataset: Dataset, job: TrainingJob, sets: Sets | None = None
-) -> tuple[TrainedModel, SplitIndices, Sets]:
+) -> tuple[TrainedModel, SplitIndices, Sets, Dataset]:
     """Trains `job` into the run's checkpoint folder, or loads it when a finished training is
     there (`train_ahead` made it, or an earlier, interrupted run): (model, the split's
-    trajectory ids, its (train, val, test) views). On another dataset (a noisy variant for
-    control) the run's test trajectories are left out of training and validation (same grid:
-    same ids). `sets`: the views of a split of the run's own dataset, when already made."""
+    trajectory ids, its (train, val, test) views, the dataset trained on). On another dataset
+    (a noisy variant for control) the run's test trajectories are left out of training and
+    validation (same grid: same ids). `sets`: the views of a split of the run's own dataset,
+    when already made."""
     entry = replace(model_entry(spec), variant=job.variant)
     root = checkpoint_root(spec.output, spec.key(), dataset.content_hash)
+    other = dataset
     if job.dataset is None or job.dataset == dataset.id:
         parts = dataset.split_indices(job.split, spec.seed)
         if sets is None:
@@ -77,7 +79,27 @@ def fit(
         sets = (train_set, val_set, test_set)
         folder = root / f"{other.id}-{other.content_hash[:12]}" / f"{job.split}__{job.variant}"
     model = train(entry, sets[0], sets[1], train_config(spec), checkpoint_dir=folder)
-    return model, parts, sets
+    return model, parts, sets, other
+
+
+def provenance(model: TrainedModel, data: Dataset, job: TrainingJob, seed: int) -> dict[str, Any]:
+    """Which network a retraining made, for the metrics of the evaluator that judges it
+    (the record's own `training` section describes only the run's model): its data, its
+    checkpoint's content hash (`TrainedModel.sha256`, what its `model.safetensors` carries)
+    and how its training ended."""
+    return {
+        "dataset": data.id,
+        "dataset_content_hash": data.content_hash,
+        "split": job.split,
+        "variant": job.variant,
+        "seed": seed,
+        "checkpoint_sha256": model.sha256(),
+        "steps": model.steps,
+        "best_step": model.best_step,
+        "stopped_by": model.stopped_by,
+        "stop_reason": model.stopped,
+        "best_val_loss": float(min(model.history["val_loss"])),
+    }
 
 
 def _fit_in_worker(item: tuple[RunSpec, TrainingJob]) -> tuple[TrainingJob, float]:
@@ -152,7 +174,7 @@ class RunTrainings:
     def train_own(self, sets: Sets) -> TrainedModel:
         """The run's own model, on its split's `sets`."""
         self.announce(self.jobs[0])
-        model, _, _ = self.timer.measure(
+        model, _, _, _ = self.timer.measure(
             "training_s", fit, self.spec, self.dataset, self.jobs[0], sets
         )
         self.model = model
@@ -168,8 +190,9 @@ class RunTrainings:
         # the data and the training, both inside the evaluation's time like any retraining
         job = TrainingJob(did, split, variant)
         self.announce(job)
-        other, _, sets = self.timer.measure("retraining_s", fit, self.spec, self.dataset, job)
-        return TrainedOnSplit(split, variant, other.predict, sets[2])
+        other, _, sets, data = self.timer.measure("retraining_s", fit, self.spec, self.dataset, job)
+        made = provenance(other, data, job, self.spec.seed)
+        return TrainedOnSplit(split, variant, other.predict, sets[2], made)
 
     def settle_timings(self) -> None:
         """Each second counted once: evaluators retrain inside their own time, and a

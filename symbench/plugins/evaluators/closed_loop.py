@@ -4,10 +4,19 @@ Protocol (`symbench presets` shows its numbers, the preset's `closed_loop` group
 
 - References: up to `references` held-out test climbs of the run's split, from distinct
   symmetry orbits, chosen deterministically (`held_out_scenarios`), so every model of a
-  split and seed tracks the same ones. The expert (the whole-body controller) climbs each
-  again, recorded at every physics step; its rows every 6 ms are the dataset's. The
-  horizon is the held-out climb's own length (the trajectories the model was trained on
-  are as long), capped at the preset's `seconds`.
+  split and seed tracks the same ones (on dataset v7's small preset all 32 `iid` test
+  climbs, each a motion of its own). The horizon is the held-out climb's own length (the
+  trajectories the model was trained on are as long), capped at the preset's `seconds`.
+- Push (dataset v7; none on the v6 presets, whose records keep their meaning): each
+  reference is climbed with a push on the base (`reference_push`: `push_n` newtons in the
+  surface plane for `push_s`, its direction and its start within 30-60 % of the climb drawn
+  from the scenario). The expert (the whole-body controller) climbs each reference again,
+  pushed, recorded at every physics step (unpushed, its rows every 6 ms are the dataset's);
+  every row below is pushed alike, at the same physics steps. The expert reacts to the push;
+  the model must carry the robot through states off the nominal climb. Calibrated on hexa
+  small (100 N for 0.1 s): the expert held all 32 `iid` references pushed with up to 150 N
+  (26 at 250 N), the oracle replays them to rounding, the PD alone falls before the push,
+  and a briefly trained SDNN (2 000 steps) held half as many of them as unpushed.
 - Training data (`trained_on` in the metrics): the model is retrained on the `next` variant
   of the run's split, by default on the noisy variant of a standard dataset (the preset's
   `closed_loop.train_preset`, e.g. small -> small-noisy: the expert's executed torques
@@ -22,9 +31,20 @@ Protocol (`symbench presets` shows its numbers, the preset's `closed_loop` group
 - Calibration rows, with the same references and PD: `oracle` (the expert's recorded
   feedforward, replayed: it reproduces the expert's climb to rounding), `floor` (zero
   feedforward: the PD alone) and `expert` (the live whole-body controller, which made the
-  reference). `normalized_score` places the model between floor (0) and oracle (1) on the
-  time held, so models compare across robots; `normalized_rmse_score` does the same with
-  the joint tracking RMSE (the score at fractions where all three hold the horizon).
+  reference). `tracking_score` (the headline score) places the model between floor (0) and
+  oracle (1) on the tracking cost, per reference, then averages over references with a 95 %
+  bootstrap interval (`tracking_score_ci95`; the board's intervals over seeds come on top).
+  The tracking cost (`symbench.track`'s `tracking_cost`) is the mean over the horizon's
+  steps of the RMS joint error relative to 0.2 rad, capped at 1, every step after a fall
+  counting 1: it grows with the error and shrinks with the time held, continuously, so it
+  neither saturates when every climb is held nor snaps to the gait event at which a climb
+  is lost. `normalized_score` (the time held) and `normalized_rmse_score` (the joint RMSE
+  over the time held) are kept as before.
+- Which network (`judged`): the model trained on the `next` variant is not the run's own,
+  so the metrics say which it is: its dataset's id and content hash, split, variant and
+  seed, its checkpoint's hash (`model.safetensors`), steps, best step, why training
+  stopped, its best validation loss, and its own open-loop torque RMSE on the references'
+  rows every 6 ms (`open_loop_torque_rmse`; per reference in `per_reference`).
 - One implementation: `symbench.ClosedLoopSetup` owns the references, gains, calibration
   (with its cache) and the model's rollouts; the site's clips run the same; this plugin
   turns its rows into metrics.
@@ -38,26 +58,32 @@ Protocol (`symbench presets` shows its numbers, the preset's `closed_loop` group
 - Metrics per row and fraction: success rate (held the whole horizon: no fall, no stance
   foot lost, base within half a step of the reference's), time to failure, joint tracking
   RMSE (over the time held), base pose drift (position and orientation error at the last
-  step held).
+  step held), tracking cost. Per reference (`per_reference`): its scenario, push and
+  open-loop error, the oracle's cost, and per fraction the model's and the floor's time
+  held and cost and the model's score.
+- Cost on 2 cores (hexa small v7, docs/concepts.md): the calibration about 30 s of CPU
+  once per dataset, split and seed; the model's rollouts 30-50 s of CPU per run.
 
-Headline (`success_rate`, `time_to_failure_s`, ... without prefix: the model alone, PD
-fraction 0; `pd_*`: the headline fraction, the preset's `headline_pd`). The headline
-fraction is 0.1: with it the PD alone (the floor) loses the path within a fraction of the
-horizon while the oracle holds it, so the feedforward must carry the climb (gravity, the
-magnets' reactions, the swing) and the score measures the model; at 1.0 the servo gains
-alone track a climb (the floor holds), at 0 the unstable gait turns any torque error into a
-fall within about a second, which measures little but the model's bias.
+Headline (`success_rate`, `time_to_failure_s`, `tracking_score`, ... without prefix: the
+model alone, PD fraction 0; `pd_*`: the headline fraction, the preset's `headline_pd`).
+The headline fraction is 0.1: with it the PD alone (the floor) loses the path within a
+fraction of the horizon while the oracle holds it, so the feedforward must carry the climb
+(gravity, the magnets' reactions, the swing) and the score measures the model; at 1.0 the
+servo gains alone track a climb (the floor holds), at 0 the unstable gait turns any torque
+error into a fall within about a second, which measures little but the model's bias.
 """
 
 from __future__ import annotations
 
 import math
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
-from symbench import ClosedLoopSetup, EvaluationContext
+from symbench import ClosedLoopSetup, EvaluationContext, Push
 from symbench import held_out_scenarios as held_out_scenarios  # kept importable from here
+from symbench.plugins.evaluators.closed_loop_score import mean_interval, reference_score
 
 NAME = "closed-loop"
 DESCRIPTION = (
@@ -93,34 +119,62 @@ def evaluate(context: EvaluationContext) -> dict:
             runs["model"][f].append(next(tracked))
             runs["oracle"][f].append(m.oracle)
             runs["floor"][f].append(m.floor[f])
+    open_loop = setup.open_loop_rmse(trained.predict, context.entry.view, references)
     tried = len(setup.scenarios)
     horizons = [float(fields["seconds"]) for fields, _ in kept]
     orbits = [_describe(fields) for fields, _ in kept]
     headline = setup.headline
+    budget = context.preset.closed_loop
     out: dict = {
         "trained_on": trained_on,
+        "judged": {**trained.provenance, "open_loop_torque_rmse": _rms(open_loop)},
         "references": len(horizons),
         "orbits": orbits,
         "horizon_s": _mean(horizons),
+        "push_n": budget.push_n,
+        "push_s": budget.push_s,
         "pd_fractions": list(fractions),
         "headline_pd_fraction": headline,
         "pd_gains": list(setup.gains(headline)),
         "expert_success_rate": len(horizons) / tried if tried else None,
     }
     by_fraction: dict[str, dict] = {}
+    scores: dict[float, list[float | None]] = {}
     for f in fractions:
         rows = {row: _summary(runs[row][f]) for row in ROWS}
+        costs = zip(*(runs[row][f] for row in ROWS), strict=True)
+        scores[f] = [
+            reference_score(model.tracking_cost, floor.tracking_cost, oracle.tracking_cost)
+            for model, oracle, floor in costs
+        ]
+        score, interval = mean_interval(scores[f])
         by_fraction[str(f)] = {
             **rows,
             "normalized_score": _normalized(rows, horizons),
             "normalized_rmse_score": _normalized_rmse(rows),
+            "tracking_score": score,
+            "tracking_score_ci95": interval,
         }
     out["by_pd_fraction"] = by_fraction
+    out["per_reference"] = [
+        {
+            "scenario": orbits[i],
+            "push": _as_dict(setup.push(m.scenario)),
+            "open_loop_torque_rmse": open_loop[i],
+            "oracle_tracking_cost": m.oracle.tracking_cost,
+            "by_pd_fraction": {
+                str(f): _reference_row(runs["model"][f][i], m.floor[f], scores[f][i])
+                for f in fractions
+            },
+        }
+        for i, m in enumerate(calibration)
+    ]
     for prefix, f in (("", fractions[0]), ("pd_", headline)):
         part = by_fraction[str(f)]
         out.update({prefix + k: v for k, v in part["model"].items()})
-        out[prefix + "normalized_score"] = part["normalized_score"]
-        out[prefix + "normalized_rmse_score"] = part["normalized_rmse_score"]
+        for key in ("normalized_score", "normalized_rmse_score", "tracking_score"):
+            out[prefix + key] = part[key]
+        out[prefix + "tracking_score_ci95"] = part["tracking_score_ci95"]
         for row in ("oracle", "floor"):
             out.update({f"{prefix}{row}_{k}": v for k, v in part[row].items() if k != "failures"})
     return out
@@ -137,6 +191,27 @@ def _mean(values: list[float]) -> float | None:
     return float(np.mean(values)) if values else None
 
 
+def _reference_row(model: Any, floor: Any, score: float | None) -> dict:
+    """One reference at one fraction: the model's and the floor's rollouts (`Tracking`s)."""
+    return {
+        "held_s": model.time_to_failure_s,
+        "tracking_cost": model.tracking_cost,
+        "floor_held_s": floor.time_to_failure_s,
+        "floor_tracking_cost": floor.tracking_cost,
+        "tracking_score": score,
+    }
+
+
+def _as_dict(push: Push | None) -> dict | None:
+    return None if push is None else push.to_dict()
+
+
+def _rms(values: list[float]) -> float | None:
+    """The root mean square of per-reference RMSEs (references of one length: the RMSE over
+    all their rows), or None."""
+    return float(np.sqrt(np.mean(np.square(values)))) if values else None
+
+
 def _summary(results: list) -> dict:
     return {
         "success_rate": _mean([float(r.attached) for r in results]),
@@ -144,6 +219,7 @@ def _summary(results: list) -> dict:
         "joint_rmse_rad": _mean([r.joint_rmse_rad for r in results]),
         "base_drift_m": _mean([r.base_drift_m for r in results]),
         "base_drift_deg": _mean([r.base_drift_deg for r in results]),
+        "tracking_cost": _mean([r.tracking_cost for r in results]),
         "failures": [r.failure for r in results if r.failure],
     }
 

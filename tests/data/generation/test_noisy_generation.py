@@ -10,7 +10,7 @@ from types import SimpleNamespace
 
 import numpy as np
 import pytest
-from stand_ins import closed_loop_dataset, tracked_to_the_end, trained_on_split
+from stand_ins import closed_loop_dataset, tracked_to_the_end, trained_on_split, without_open_loop
 
 from symbench.core.common.errors import SymbenchError
 from symbench.core.config.presets import PRESETS, dataset_id, parse_dataset_id
@@ -132,13 +132,13 @@ def test_the_closed_loop_trains_on_the_noisy_variant_and_says_so(
 ):
     simulated, asked = [], []
 
-    def simulate(scenario, record_period):
+    def simulate(scenario, record_period, push=None):
         simulated.append(scenario)
         steps = int(round(scenario.seconds / 0.001))
         arrays = {"t": 0.001 * np.arange(steps), "tau": np.zeros((steps, 6, 3))}
         return SimpleNamespace(attached=True, arrays=arrays)
 
-    def track(scenario, reference, policy, pd, observe=None):
+    def track(scenario, reference, policy, pd, observe=None, push=None):
         policy({"t": np.zeros(1)})  # the model is asked
         return tracked_to_the_end(scenario)
 
@@ -157,6 +157,7 @@ def test_the_closed_loop_trains_on_the_noisy_variant_and_says_so(
     monkeypatch.setattr("symbench.core.sim.climb.rollout.simulate", simulate)
     monkeypatch.setattr("symbench.core.runs.closed_loop.track", track)
     monkeypatch.setattr("symbench.core.runs.closed_loop.track_batch", track_batch)
+    without_open_loop(monkeypatch)
     noise = {"torque_noise": 0.5} if "noisy" in did else {}
     dataset = closed_loop_dataset(
         [{"robot": "hexa", "yaw_deg": 10.0 * i, **noise} for i in range(2)], did

@@ -16,6 +16,10 @@ from `noise_seed`), which MuJoCo's actuator then clips like any command; the rec
 stays clip(u - Kp q_t - Kd qd_t+1) with u the expert's command without the noise: the
 expert's answer at the perturbed state, not what perturbed it. With 0 the loop is exactly
 the noise-free one.
+
+A push (`Push`, the closed loop's perturbation): an external force on the base over some
+physics steps, set between calls of the compiled loop (which then runs in segments around
+the push); without one the loop is exactly the unpushed one.
 """
 
 from __future__ import annotations
@@ -35,6 +39,7 @@ from symbench.core.sim.control.controller import ControlOutput, WholeBodyControl
 from symbench.core.sim.gait.plan import STANCE, GaitPlan, GaitTargets
 from symbench.core.sim.raw import RAW_COLUMNS, column_shape, validate_raw
 from symbench.core.sim.scene.mjcf import SOLE_MARGIN
+from symbench.core.sim.scene.push import Push
 from symbench.core.sim.scene.scenario import Scenario
 from symbench.core.sim.scene.setup import Climb
 
@@ -71,6 +76,7 @@ def run_climb(
     torque_noise: float = 0.0,
     noise_seed: list[int] | None = None,
     on_finish: Callable[[object], None] | None = None,
+    push: Push | None = None,
 ) -> Rollout:
     """Simulate `climb` for `seconds`; stops early (attached=False) when the robot falls.
 
@@ -81,7 +87,7 @@ def run_climb(
     recorded `tau` is the expert's command without it (see the module's docstring).
     `on_step(output, physics)`, when given, is called after every physics step (the loop
     then returns to Python at each step instead of running compiled throughout);
-    `on_finish(physics)` once at the end.
+    `on_finish(physics)` once at the end. `push`, when given, acts on the base at its steps.
     """
     from symbench.core.sim.scene.task import load_climb
 
@@ -132,17 +138,24 @@ def run_climb(
     t0 = float(data.time)
     climb_steps(0, 0, t0, *args)  # no step: compiles or loads the loop outside the clocks
     wall, cpu = time.perf_counter(), time.process_time()
-    if on_step is None:
-        steps, t, status = climb_steps(0, n_steps, t0, *args)
-    else:
-        steps, t, status = 0, t0, HOLDING
-        while steps < n_steps and status == HOLDING:
-            steps, t, status = climb_steps(steps, steps + 1, t, *args)
-            if status == HOLDING:
-                phase, magnet, base, sole, command, tau = (a.copy() for a in out)
-                slot, leg = (int(v) for v in plan_step)
-                targets = GaitTargets(phase, magnet, base, slot, leg, sole)
-                on_step(ControlOutput(command, tau, magnet, targets), physics)
+    window = push.steps(dt) if push is not None else range(0)
+    force = push.world_force(task.plan.normal) if push is not None else np.zeros(3)
+    applied = data.xfrc_applied[lay.base_body]  # a view: MuJoCo reads it at every step
+    # compiled segments that start or stop where the push does, or one step at a time
+    cuts = {min(max(k, 0), n_steps) for k in (window.start, window.stop)}
+    stops = range(1, n_steps + 1) if on_step is not None else sorted((cuts | {n_steps}) - {0})
+    steps, t, status = 0, t0, HOLDING
+    for stop in stops:
+        applied[:3] = force if steps in window else 0.0
+        steps, t, status = climb_steps(steps, stop, t, *args)
+        if status != HOLDING:
+            break
+        if on_step is not None:
+            phase, magnet, base, sole, command, tau = (a.copy() for a in out)
+            slot, leg = (int(v) for v in plan_step)
+            targets = GaitTargets(phase, magnet, base, slot, leg, sole)
+            on_step(ControlOutput(command, tau, magnet, targets), physics)
+    applied[:3] = 0.0
     wall, cpu = time.perf_counter() - wall, time.process_time() - cpu
     if on_finish is not None:
         on_finish(physics)
@@ -203,10 +216,14 @@ class _Stats:
 
 
 def simulate(
-    scenario: Scenario, record_period: float = 0.006, control_period: float | None = None
+    scenario: Scenario,
+    record_period: float = 0.006,
+    control_period: float | None = None,
+    push: Push | None = None,
 ) -> Rollout:
     """The contract entry point: one scenario, raw columns every `record_period` seconds
-    (controller every physics step unless `control_period` says otherwise)."""
+    (controller every physics step unless `control_period` says otherwise), pushed when
+    `push` is given."""
     return run_climb(
         Climb.from_scenario(scenario),
         scenario.seconds,
@@ -214,4 +231,5 @@ def simulate(
         control_period=control_period,
         torque_noise=scenario.torque_noise,
         noise_seed=scenario.noise_seed() if scenario.torque_noise else None,
+        push=push,
     )

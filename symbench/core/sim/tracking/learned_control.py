@@ -33,6 +33,10 @@ is more than half a step length from the reference's (it lost its path: `off_pat
 a stance foot (magnet on in the reference) stays off the surface for more than GRACE_S: a
 learned controller that lands a swing foot a few tens of milliseconds late has not fallen,
 and the magnet pulls the foot in once it is within reach.
+
+A push (`Push`) acts on the base at the same physics steps as on the expert's climb of the
+reference (`simulate(..., push=)`): tracked with the recorded torques, the pushed climb comes
+back to rounding too.
 """
 
 from __future__ import annotations
@@ -45,10 +49,14 @@ import numpy as np
 
 from symbench.core.common.errors import SymbenchError
 from symbench.core.sim.contact.failure import Detachment, off_path
+from symbench.core.sim.scene.push import Push
 from symbench.core.sim.scene.scenario import Scenario
 
 GRACE_S = 0.1  # s a stance foot may stay off the surface before the climb counts as failed
 LOOKAHEAD_S = 0.006  # s: the record period of the standard datasets (the `next` variant)
+# rad: a step whose RMS joint error reaches this counts as lost as a step after a fall
+# (`Tracking.tracking_cost`); about the error at which the PD alone loses the climb
+ERROR_SCALE_RAD = 0.2
 
 # per-sample policy: raw columns of two rows (now, desired ahead) -> torques (n_legs, 3); the
 # rows are filled in place at every step, valid during the call only (copy what is kept)
@@ -73,6 +81,10 @@ class Tracking:
     max_joint_error_rad: float = float("nan")  # over the time it held on
     base_drift_m: float = float("nan")  # base position error at the last step it held on
     base_drift_deg: float = float("nan")  # base orientation error then
+    # the mean over the horizon's steps of min(RMS joint error / ERROR_SCALE_RAD, 1), every
+    # step after a fall counting 1: in [0, 1], continuous in the error and in the time held
+    # (a fall one gait event later changes it by the steps gained, at their own error)
+    tracking_cost: float = float("nan")
 
 
 def expert_reference(scenario: Scenario):
@@ -105,6 +117,7 @@ class _Rollout:
         lookahead: float,
         observe: Observer | None,
         rows: dict[str, np.ndarray],
+        push: Push | None = None,
     ):
         from symbench.core.sim.scene.setup import Climb
         from symbench.core.sim.scene.task import load_climb
@@ -146,6 +159,9 @@ class _Rollout:
             lay.magnet,
             lay.base_body,
         )
+        self.window = push.steps(dt) if push is not None else range(0)
+        self.force = push.world_force(self.plan.normal) if push is not None else np.zeros(3)
+        self.applied = data.xfrc_applied[lay.base_body]  # a view MuJoCo reads at every step
         self.rows = rows
         self.unmeasured = [(rows[c], reference[c]) for c in rows if c not in MEASURED]
         self.ahead_rows = [(rows[c], reference[c]) for c in rows]
@@ -200,6 +216,7 @@ class _Rollout:
             + (self.kd - self.pd_d) * (qd + dt * ref_qdd[k])
         )
         self.ctrl[self.magnet] = self.plan.targets(self.data.time).magnet
+        self.applied[:3] = self.force if k in self.window else 0.0
         mujoco.mj_step2(self.model, self.data)
         mujoco.mj_step1(self.model, self.data)
         if self.observe is not None:
@@ -209,8 +226,10 @@ class _Rollout:
         failure, last, pose = self.failure, self.last, self.pose
         held = float(self.data.time) if failure is not None else self.n_rows * self.dt
         if last < 0:
-            return Tracking(False, failure, held, float("nan"), 0)
+            return Tracking(False, failure, held, float("nan"), 0, tracking_cost=1.0)
         held_errors = self.errors[: last + 1]
+        per_step = np.sqrt(np.mean(np.square(held_errors.reshape(last + 1, -1)), axis=1))
+        lost = np.sum(np.minimum(per_step / ERROR_SCALE_RAD, 1.0)) + (self.n_rows - last - 1)
         drift = float(np.linalg.norm(pose[:3] - self.reference["base_pos"][last]))
         turn = _angle_deg(pose[3:7], self.reference["base_quat"][last])
         return Tracking(
@@ -222,18 +241,21 @@ class _Rollout:
             float(np.max(np.abs(held_errors))),
             drift,
             turn,
+            float(lost / self.n_rows),
         )
 
 
 @dataclass(frozen=True)
 class TrackJob:
     """One tracking of `track_batch`: a reference climb (see `expert_reference`) and the PD
-    gains about it; `observe`, when given, sees the physics after every step."""
+    gains about it; `observe`, when given, sees the physics after every step; `push`, when
+    given, acts on the base (the one the reference was climbed with)."""
 
     scenario: Scenario
     reference: dict[str, np.ndarray]
     pd_gains: tuple[float, float] = (0.0, 0.0)
     observe: Observer | None = None
+    push: Push | None = None
 
 
 def track_batch(
@@ -258,7 +280,9 @@ def track_batch(
             raise SymbenchError("track_batch: the references of one batch need the same columns")
         rows = {c: block[2 * i : 2 * i + 2] for c, block in stacked.items()}  # views
         rollouts.append(
-            _Rollout(job.scenario, job.reference, job.pd_gains, lookahead, job.observe, rows)
+            _Rollout(
+                job.scenario, job.reference, job.pd_gains, lookahead, job.observe, rows, job.push
+            )
         )
     live = [r.sense() for r in rollouts]
     while any(live):
@@ -277,9 +301,11 @@ def track(
     pd_gains: tuple[float, float] = (0.0, 0.0),
     lookahead: float = LOOKAHEAD_S,
     observe: Observer | None = None,
+    push: Push | None = None,
 ) -> Tracking:
     """Run `policy` on `scenario` against `reference` (raw columns at every physics step,
     see `expert_reference`) over the reference's whole length; `observe`, when given, sees
-    the physics after every step (it must not change it)."""
-    job = TrackJob(scenario, reference, pd_gains, observe)
+    the physics after every step (it must not change it); `push`, when given, acts on the
+    base as it did on the expert's climb of the reference."""
+    job = TrackJob(scenario, reference, pd_gains, observe, push)
     return track_batch([job], lambda rows: np.asarray(policy(rows))[None], lookahead)[0]

@@ -1,4 +1,5 @@
-"""The climbs the closed loop tracks, and the expert's own torques replayed on them.
+"""The climbs the closed loop tracks, the push each is climbed with, and the expert's own
+torques replayed on them.
 
 The pieces of the closed loop (`symbench.core.runs.closed_loop.ClosedLoopSetup`, which the
 closed-loop evaluator and the leaderboard site's clips both run), public for evaluators of
@@ -7,10 +8,18 @@ their own.
 
 from __future__ import annotations
 
+import zlib
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 import numpy as np
+
+from symbench.core.sim.scene.push import Push
+
+# the share of a climb within which its push starts: after the start's transient, with time
+# left to recover (or to fall) before the horizon
+PUSH_WINDOW = (0.3, 0.6)
+PUSH_DRAW = zlib.crc32(b"closed-loop push")  # tells the push's draws apart from others
 
 if TYPE_CHECKING:
     from symbench.core.sim.scene.scenario import Scenario
@@ -74,6 +83,21 @@ def reference_scenarios(
     ]
 
 
+def reference_push(scenario: Scenario, force_n: float, duration_s: float) -> Push | None:
+    """The push `scenario` is climbed with in the closed loop (None when `force_n` is 0):
+    `force_n` newtons in the surface plane for `duration_s`, its direction (from downhill)
+    and its start (within PUSH_WINDOW of the climb) drawn from the scenario's seed, so every
+    row and every model of a reference meets the same push."""
+    if not force_n:
+        return None
+    rng = np.random.default_rng([PUSH_DRAW, int(scenario.seed)])
+    low, high = PUSH_WINDOW
+    start = round(float(rng.uniform(low, high)) * float(scenario.seconds), 3)
+    angle = float(rng.uniform(0.0, 2.0 * np.pi))
+    force = (round(force_n * np.cos(angle), 6), round(force_n * np.sin(angle), 6), 0.0)
+    return Push(start, duration_s, force)
+
+
 def oracle_policy(reference: dict[str, np.ndarray]) -> Policy:
     """The expert's recorded torque of the current physics step (`reference` as
     `expert_reference` records it): tracked, it gives back the expert's climb to rounding
@@ -87,13 +111,20 @@ def model_jobs(
     references: Sequence[tuple[Scenario, dict[str, np.ndarray]]],
     fractions: Sequence[float],
     servo_gains: tuple[float, float],
+    pushes: Sequence[Push | None] | None = None,
 ) -> list[TrackJob]:
     """The closed loop's rollouts of one model, in the evaluator's order: every reference
-    (scenario, the expert's climb at every physics step) at every PD fraction of the servo
-    gains (Kp, Kd), fractions inner. `track_batch` of them with the model's policy is the
-    evaluator's measurement; a model's torques may round differently in another batch, so
-    whoever reproduces one of these rollouts runs this very batch."""
+    (scenario, the expert's climb at every physics step, pushed by `pushes[i]` when given)
+    at every PD fraction of the servo gains (Kp, Kd), fractions inner. `track_batch` of them
+    with the model's policy is the evaluator's measurement; a model's torques may round
+    differently in another batch, so whoever reproduces one of these rollouts runs this
+    very batch."""
     from symbench.core.sim.tracking.learned_control import TrackJob
 
     kp, kd = servo_gains
-    return [TrackJob(s, r, (f * kp, f * kd)) for s, r in references for f in fractions]
+    pushed = list(pushes) if pushes is not None else [None] * len(references)
+    return [
+        TrackJob(s, r, (f * kp, f * kd), push=p)
+        for (s, r), p in zip(references, pushed, strict=True)
+        for f in fractions
+    ]
