@@ -49,6 +49,9 @@ COLUMNS = {
     ("closed-loop", "pd_time_to_failure_s"): "cl_held_s",
     ("closed-loop", "pd_joint_rmse_rad"): "cl_rmse_rad",
     ("closed-loop", "pd_normalized_score"): "cl_score",
+    # the continuous tracking score between floor (0) and oracle (1), pushed references
+    # (dataset v7 on; earlier records lack it and their tables show no such column)
+    ("closed-loop", "pd_tracking_score"): "cl_tracking",
     # the dataset's own torque asymmetry (data-symmetry evaluator): the same for every model
     ("data-symmetry", "tau_rel_error"): "data_tau_asym",
 }
