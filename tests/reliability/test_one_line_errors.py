@@ -135,8 +135,22 @@ def test_metadata_missing_a_key_is_named(smoke_hexa, key):
             "{path}: trajectories.0.scenario (file run0.npz): Input should be a valid dictionary "
             "or instance of ScenarioFields",
         ),
+        (
+            lambda m: m.update(
+                trajectories=[{"file": "run0.npz", "scenario": {"heading_deg": 2**53 + 1}}]
+            ),
+            "{path}: trajectories.0.scenario.heading_deg (file run0.npz): 9007199254740993 has "
+            "more digits than a float holds: give it as a float, got 9007199254740993",
+        ),
     ],
-    ids=["Infinity", "NaN", "text for a number", "number for a file", "list for a scenario"],
+    ids=[
+        "Infinity",
+        "NaN",
+        "text for a number",
+        "number for a file",
+        "list for a scenario",
+        "an integer no float holds",
+    ],
 )
 def test_import_json_with_bad_values_is_named(home, tmp_path, edit, problem):
     folder = write_logs(tmp_path / "logs")
