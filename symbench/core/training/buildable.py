@@ -1,8 +1,8 @@
-"""Build keywords set by hand (`--size NAME=INT`) checked by building the network once, before
-any work: torch builds a zero-width layer with only a warning and trains it to nothing, a
-negative step count silently means none, and a value the build function refuses would
-otherwise surface mid-run. A value that cannot build the asked network is refused in one
-line naming it and the nearest value that builds.
+"""Build keywords set by hand (`--size NAME=INT`) checked by building the network's shapes
+once, before any work (nothing allocated): torch builds a zero-width layer with only a warning
+and trains it to nothing, a negative step count silently means none, and a value the build
+function refuses would otherwise surface mid-run. A value that cannot build the asked network
+is refused in one line naming it and the nearest value that builds.
 
 The rule, for any model: a width keyword (`ModelEntry.widths`) is at least 1, every other
 build keyword at least 0 (sizes are counts, switches are 0 or 1); none is above MAX_SCALE x
@@ -67,12 +67,12 @@ def _why_not(entry: ModelEntry, dims: ModelDims, hyper: Mapping[str, int]) -> st
     """Why the network of `hyper` cannot be built (None: it can). A plugin's build function
     may raise anything, so every exception is a reason."""
     try:
-        params = get_backend(entry.backend).init_params(entry, dims, dict(hyper), 0)
+        shapes = get_backend(entry.backend).parameter_shapes(entry, dims, dict(hyper))
     except Exception as error:  # the plugin's error, whatever it is, reported in words
         if isinstance(error, SymbenchError):  # the backend's, naming the model
             return str(error)
         return f"model {_named(entry)} could not be built: {type(error).__name__}: {error}"
-    empty = sorted(k for k, v in params.items() if v.size == 0)
+    empty = sorted(k for k, shape in shapes.items() if 0 in shape)
     return f"model {_named(entry)} would have no elements in {empty[0]}" if empty else None
 
 

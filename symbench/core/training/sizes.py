@@ -11,6 +11,8 @@ would build 54 parameters).
 
 from __future__ import annotations
 
+import math
+
 from symbench.core.common.errors import SymbenchError
 from symbench.core.config.provenance import build_hyperparameters
 from symbench.core.data.views.model_dims import ModelDims
@@ -31,8 +33,10 @@ def scaled_widths(entry: ModelEntry, scale: float) -> dict[str, int]:
 
 
 def parameter_count(entry: ModelEntry, dims: ModelDims, hyper: dict[str, int]) -> int:
-    params = get_backend(entry.backend).init_params(entry, dims, hyper, 0)
-    return int(sum(v.size for v in params.values()))
+    """Counted from shapes, nothing allocated: the search looks at networks up to MAX_SCALE x
+    wider, gigabytes for `--parameters 1e12`."""
+    shapes = get_backend(entry.backend).parameter_shapes(entry, dims, hyper)
+    return sum(math.prod(shape) for shape in shapes.values())
 
 
 def matched_widths(entry: ModelEntry, dims: ModelDims, target: int) -> dict[str, int]:

@@ -50,6 +50,12 @@ class Backend(Protocol):
         self, entry: ModelEntry, dims: ModelDims, hyper: dict[str, Any], seed: int
     ) -> Params: ...
 
+    def parameter_shapes(
+        self, entry: ModelEntry, dims: ModelDims, hyper: dict[str, Any]
+    ) -> dict[str, tuple[int, ...]]:
+        """The names and shapes `init_params` would give, found without allocating them: a
+        size search or a size check may look at networks of gigabytes."""
+
     def make_predictor(
         self,
         entry: ModelEntry,

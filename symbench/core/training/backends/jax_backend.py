@@ -197,6 +197,12 @@ class JaxBackend:
         init = jax.jit(net.init)  # op-by-op initialization is several times slower
         return flatten(init(jax.random.PRNGKey(seed), **_dummy(dims))["params"])
 
+    def parameter_shapes(self, entry, dims, hyper) -> dict[str, tuple[int, ...]]:
+        net = build_module(entry, dims, hyper)
+        tree = jax.eval_shape(net.init, jax.random.PRNGKey(0), **_dummy(dims))["params"]
+        flat = traverse_util.flatten_dict(tree, sep="/")
+        return {k: tuple(v.shape) for k, v in flat.items()}
+
     def make_predictor(
         self, entry, dims, hyper, params, normalizer, dtype=np.float32, compiled=True
     ):

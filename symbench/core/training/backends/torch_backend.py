@@ -22,6 +22,7 @@ import numpy as np
 import torch
 import torch.nn.functional as F
 
+from symbench.core.common.errors import SymbenchError
 from symbench.core.data.views.model_dims import ModelDims
 from symbench.core.plugin.entries import ModelEntry
 from symbench.core.training.backends.checks import build_error, check_output, check_params
@@ -205,6 +206,14 @@ class TorchBackend:
         with torch.random.fork_rng(devices=[]):
             torch.manual_seed(seed)
             return to_numpy(build_network(entry, dims, hyper))
+
+    def parameter_shapes(self, entry, dims, hyper) -> dict[str, tuple[int, ...]]:
+        try:
+            with torch.device("meta"):  # shapes only: nothing is allocated or initialised
+                net = build_network(entry, dims, hyper)
+        except SymbenchError:  # a build that reads tensor values (e2cnn's bases) needs data
+            net = build_network(entry, dims, hyper)
+        return {k: tuple(v.shape) for k, v in net.state_dict().items()}
 
     def make_predictor(
         self, entry, dims, hyper, params, normalizer, dtype=np.float32, compiled=False
