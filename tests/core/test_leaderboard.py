@@ -54,6 +54,7 @@ def test_tables_and_plot_regenerate_identically(tmp_path, make_record):
     first = write_leaderboard(tmp_path / "records", tmp_path / "out")
     names = sorted(p.name for p in first)
     assert names == [
+        "claims.md",
         "hexa-sample-efficiency.png",
         "hexa.md",
         "leaderboard.csv",

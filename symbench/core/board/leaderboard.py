@@ -27,6 +27,7 @@ import numpy as np
 import pandas as pd
 
 from symbench.core.board.cells import cell_of
+from symbench.core.board.claims import claims_markdown
 from symbench.core.board.plots import Spread, asymmetry_png, sample_efficiency_png
 from symbench.core.board.statistics import mean_interval, rank_bands
 from symbench.core.board.summary import headline
@@ -320,6 +321,9 @@ def write_tables(records: list[tuple[Path, RecordV1]], out: Path) -> list[Path]:
     summary = out / "summary.md"
     write_text_atomic(summary, headline(table))
     written.append(summary)
+    claims = out / "claims.md"
+    write_text_atomic(claims, claims_markdown(table))
+    written.append(claims)
     for robot in sorted(table.robot.unique()):
         md = out / f"{robot}.md"
         write_text_atomic(md, markdown(table, robot))

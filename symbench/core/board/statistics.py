@@ -58,6 +58,33 @@ def mean_interval(values: Sequence[float]) -> tuple[float, float]:
     return float(low), float(high)
 
 
+def t_interval(samples: Sequence[float]) -> Interval:
+    """The mean of per-seed `samples` (paired differences, or log ratios) with its two-sided
+    Student-t interval at CONFIDENCE: the rank bands' paired test as an interval, so that a
+    claim's verdict and the bands agree. NaN bounds below two samples."""
+    x = np.asarray(samples, dtype=float)
+    mean = float(x.mean())
+    if len(x) < 2:
+        return Interval(mean, np.nan, np.nan)
+    half = _critical_t(len(x) - 1) * float(x.std(ddof=1)) / np.sqrt(len(x))
+    return Interval(mean, mean - half, mean + half)
+
+
+def welch_interval(a: Sequence[float], b: Sequence[float]) -> Interval:
+    """mean(a) - mean(b) with its Welch interval at CONFIDENCE, for samples that do not pair
+    up (two datasets' seeds). NaN bounds below two samples on either side."""
+    x, y = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    difference = float(x.mean() - y.mean())
+    if min(len(x), len(y)) < 2:
+        return Interval(difference, np.nan, np.nan)
+    vx, vy = x.var(ddof=1) / len(x), y.var(ddof=1) / len(y)
+    if vx + vy == 0:
+        return Interval(difference, difference, difference)
+    dof = (vx + vy) ** 2 / (vx**2 / (len(x) - 1) + vy**2 / (len(y) - 1))
+    half = float(stats.t.ppf(1 - LEVEL / 2, dof)) * float(np.sqrt(vx + vy))
+    return Interval(difference, difference - half, difference + half)
+
+
 def differ(a: Mapping[int, float], b: Mapping[int, float]) -> bool:
     """Whether two models' test RMSEs differ: a two-sided paired t-test at LEVEL on the log
     RMSE of the seeds both have (a seed fixes the split and the initialization). Below two
