@@ -62,3 +62,17 @@ def test_sample_efficiency_curve_ends_with_iid_at_one(tmp_path, make_record, mon
     assert sample_efficiency_plot(aggregate(load_records(tmp_path)), "hexa", tmp_path / "p.png")
     fractions, spreads = drawn["sdnn (acc, torch)"]
     assert fractions == [0.25, 1.0] and [s.mean for s in spreads] == pytest.approx([0.4, 0.1])
+
+
+def test_closed_loop_section_prefers_the_continuous_tracking_score(tmp_path, make_record):
+    for s in range(3):
+        record = make_record(seed=s)
+        record["metrics"]["closed-loop"] = {
+            "pd_time_to_failure_s": 2.0,
+            "pd_normalized_score": 1.0,  # saturated: every reference held
+            "pd_tracking_score": 0.3 + 0.1 * s,
+        }
+        write_record(record, tmp_path / f"r{s}.json")
+    page = headline(aggregate(load_records(tmp_path)))
+    assert "tracking score (floor 0, oracle 1)" in page
+    assert "| hexa-climb-smoke-v7 | iid | 0.4 [0.3, 0.5] / 2 |" in page

@@ -59,13 +59,18 @@ def error_section(table: pd.DataFrame, metric: str, title: str) -> list[str]:
 
 def closed_loop_section(table: pd.DataFrame) -> list[str]:
     """The closed loop at the headline PD fraction: the model's score between the PD alone
-    (0) and the expert's recorded feedforward (1), and the seconds it held the reference."""
-    if "cl_score_mean" not in table or table.cl_held_s_mean.isna().all():
+    (0) and the oracle (1), and the seconds it held the reference. The score is the
+    continuous tracking score where the records have it (pushed references, dataset v7
+    on), else the score of time held (earlier records)."""
+    if "cl_held_s_mean" not in table or table.cl_held_s_mean.isna().all():
         return []
     rows = table[table.cl_held_s_mean.notna()]
+    tracking = "cl_tracking_mean" in rows and rows.cl_tracking_mean.notna().all()
+    score = "cl_tracking" if tracking else "cl_score"
+    name = "tracking score" if tracking else "normalized score"
     columns = _column_order(rows)
     lines = [
-        "## Closed loop at the headline PD fraction: normalized score (floor 0, oracle 1), "
+        f"## Closed loop at the headline PD fraction: {name} (floor 0, oracle 1), "
         "mean [95 % CI] over seeds / seconds held, mean over seeds",
         "",
         "| dataset | split | " + " | ".join(columns) + " |",
@@ -74,7 +79,7 @@ def closed_loop_section(table: pd.DataFrame) -> list[str]:
     for (did, split), part in rows.groupby(["dataset", "split"], sort=True):
         part = part.set_index("label")
         cells = [
-            f"{cell_of(part.loc[c], 'cl_score', 2)} / {part.at[c, 'cl_held_s_mean']:.3g}"
+            f"{cell_of(part.loc[c], score, 2)} / {part.at[c, 'cl_held_s_mean']:.3g}"
             if c in part.index
             else "-"
             for c in columns
