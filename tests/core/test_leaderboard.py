@@ -7,6 +7,7 @@ import json
 import pytest
 
 from symbench.core.board.leaderboard import aggregate, load_records, write_leaderboard
+from symbench.core.board.series import asymmetry_series
 from symbench.core.common.errors import SymbenchError
 from symbench.core.runs.results import write_record
 
@@ -117,9 +118,7 @@ def test_output_names_cannot_leave_the_output_folder(tmp_path, make_record, as_s
     ]
 
 
-def test_asymmetric_variants_are_plotted_against_their_asymmetry(
-    tmp_path, make_record, monkeypatch
-):
+def test_asymmetric_variants_are_plotted_against_their_asymmetry(tmp_path, make_record):
     """hexa and its variants hexa-asym-A: each model's RMSE per A, with the datasets' own
     torque asymmetry (data-symmetry evaluator) beside it; a robot without variants gets no
     such plot, and a split run on the symmetric robot only is left out of it."""
@@ -134,18 +133,15 @@ def test_asymmetric_variants_are_plotted_against_their_asymmetry(
     runs += [make_record(robot="nona", seed=s) for s in range(3)]
     for i, record in enumerate(runs):
         write_record(record, tmp_path / "records" / f"r{i}.json")
-    plotted = {}
-    monkeypatch.setattr(
-        "symbench.core.board.leaderboard.asymmetry_png",
-        lambda curves, data, title, path: plotted.update(curves=curves, data=data, path=path),
-    )
     names = sorted(p.name for p in write_leaderboard(tmp_path / "records", tmp_path / "out"))
     assert "hexa-asymmetry.png" in names and "nona-asymmetry.png" not in names
-    assert plotted["path"].name == "hexa-asymmetry.png"
-    curves = plotted["curves"]
-    assert sorted(curves) == ["ffnn (acc, torch), iid", "sdnn (acc, torch), iid"]
-    x, spreads = curves["sdnn (acc, torch), iid"]
-    assert x == [0.0, 0.1] and [s.mean for s in spreads] == pytest.approx([0.01, 0.11])
-    assert [s.low for s in spreads] == [s.high for s in spreads] == pytest.approx([0.01, 0.11])
-    assert spreads[1].seeds == pytest.approx((0.11, 0.11, 0.11))  # each seed's dot
-    assert plotted["data"] == ([0.0, 0.1], pytest.approx([1e-13, 0.05]))
+    table = aggregate(load_records(tmp_path / "records"))
+    assert asymmetry_series(table, "nona") == ([], None)
+    curves, data = asymmetry_series(table, "hexa")
+    assert [c.label for c in curves] == ["ffnn (acc, torch, iid)", "sdnn (acc, torch, iid)"]
+    sdnn = curves[1].points
+    assert list(sdnn) == [0.0, 0.1]
+    assert [s.mean for s in sdnn.values()] == pytest.approx([0.01, 0.11])
+    assert [s.low for s in sdnn.values()] == [s.high for s in sdnn.values()]
+    assert sdnn[0.1].seeds == pytest.approx((0.11, 0.11, 0.11))  # each seed's dot
+    assert data == ([0.0, 0.1], pytest.approx([1e-13, 0.05]))

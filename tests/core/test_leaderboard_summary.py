@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from symbench.core.board import leaderboard
-from symbench.core.board.leaderboard import aggregate, load_records, sample_efficiency_plot
+from symbench.core.board.leaderboard import aggregate, load_records
+from symbench.core.board.series import sample_efficiency_series
 from symbench.core.board.summary import headline
 from symbench.core.runs.results import write_record
 
@@ -48,20 +48,17 @@ def test_closed_loop_section_shows_the_headline_score_and_time_held(tmp_path, ma
     assert "| hexa-climb-smoke-v7 | iid | 0.5 [0.4, 0.6] / 2 |" in page
 
 
-def test_sample_efficiency_curve_ends_with_iid_at_one(tmp_path, make_record, monkeypatch):
+def test_sample_efficiency_curve_ends_with_iid_at_one(tmp_path, make_record):
     runs = [
         dict(model="sdnn", split=split, seed=s, rmse=r)
         for split, r in (("fraction-0.25", 0.4), ("iid", 0.1))
         for s in range(3)
     ]
     write_runs(tmp_path, make_record, runs)
-    drawn = {}
-    monkeypatch.setattr(
-        leaderboard, "sample_efficiency_png", lambda curves, title, path: drawn.update(curves)
-    )
-    assert sample_efficiency_plot(aggregate(load_records(tmp_path)), "hexa", tmp_path / "p.png")
-    fractions, spreads = drawn["sdnn (acc, torch)"]
-    assert fractions == [0.25, 1.0] and [s.mean for s in spreads] == pytest.approx([0.4, 0.1])
+    (curve,) = sample_efficiency_series(aggregate(load_records(tmp_path)), "hexa")
+    assert (curve.model, curve.label) == ("sdnn", "sdnn (acc, torch)")
+    assert list(curve.points) == [0.25, 1.0]
+    assert [s.mean for s in curve.points.values()] == pytest.approx([0.4, 0.1])
 
 
 def test_closed_loop_section_prefers_the_continuous_tracking_score(tmp_path, make_record):

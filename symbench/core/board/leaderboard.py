@@ -28,7 +28,9 @@ import pandas as pd
 
 from symbench.core.board.cells import cell_of
 from symbench.core.board.claims import claims_markdown
-from symbench.core.board.plots import Spread, asymmetry_png, sample_efficiency_png
+from symbench.core.board.plot_files import write_png
+from symbench.core.board.plots import asymmetry_figure, sample_efficiency_figure
+from symbench.core.board.series import asymmetry_series, sample_efficiency_series
 from symbench.core.board.statistics import mean_interval, rank_bands
 from symbench.core.board.summary import headline
 from symbench.core.common.atomic import write_text_atomic
@@ -193,17 +195,6 @@ def _counts(reasons: pd.Series) -> str:
     return ", ".join(f"{r} {counts[r]}" for r in sorted(counts.index))
 
 
-def spread(row: pd.Series, metric: str) -> Spread:
-    """A metric of an aggregate row as the plots draw it: mean, interval, each seed."""
-    values = [v for v in row.per_seed[metric].values() if not np.isnan(v)]
-    return Spread(
-        float(row[f"{metric}_mean"]),
-        float(row[f"{metric}_ci_low"]),
-        float(row[f"{metric}_ci_high"]),
-        tuple(values),
-    )
-
-
 def markdown(table: pd.DataFrame, robot: str) -> str:
     """One robot's leaderboard: a section per dataset, in it one per split, rows ranked by
     RMSE."""
@@ -248,63 +239,6 @@ def _split_tables(table: pd.DataFrame, metrics: list[str]) -> list[str]:
     return lines
 
 
-def sample_efficiency_plot(table: pd.DataFrame, robot: str, path: Path) -> bool:
-    """Test RMSE against training fraction, one line per model (and dataset, when the robot
-    has records of several); False when no fractions. `iid` is the same split with all of its
-    training trajectories, so it is the point at 1."""
-    rows = table[table.robot == robot].copy()
-    fractions = rows.split.str.startswith("fraction-")
-    if not fractions.any():
-        return False
-    rows = rows[fractions | (rows.split == "iid")]
-    rows["fraction"] = rows.split.str.removeprefix("fraction-").replace("iid", "1").astype(float)
-    several = rows.dataset.nunique() > 1
-    protocols = rows.protocol.nunique() > 1
-    curves = {}
-    for (did, protocol, model, variant, backend), part in rows.groupby(
-        ["dataset", "protocol", "model", "variant", "backend"], sort=True
-    ):
-        part = part.sort_values("fraction")
-        on = (f", {did}" if several else "") + (f", {protocol}" if protocols else "")
-        curves[f"{model} ({variant}, {backend}{on})"] = (
-            part.fraction.tolist(),
-            [spread(row, "rmse_Nm") for _, row in part.iterrows()],
-        )
-    sample_efficiency_png(curves, f"{robot}: sample efficiency", path)
-    return True
-
-
-def asymmetry_plot(table: pd.DataFrame, base: str, path: Path) -> bool:
-    """Test RMSE against the asymmetry of `base`'s variants (`base-asym-A`, `base` itself at
-    0), one line per split and model, with the datasets' own torque asymmetry beside it;
-    False when `base` has no variant records. Each preset and protocol is its own line."""
-    rows = table.copy()
-    rows[["base", "asymmetry"]] = [split_variant(r) for r in rows.robot]
-    rows = rows[rows.base == base]
-    if not (rows.asymmetry > 0).any():
-        return False
-    several = rows.preset.nunique() > 1 or rows.protocol.nunique() > 1
-    curves = {}
-    for (split, model, variant, backend, preset, protocol), part in rows.groupby(
-        ["split", "model", "variant", "backend", "preset", "protocol"], sort=True
-    ):
-        if not (part.asymmetry > 0).any():
-            continue  # a split or model run on the symmetric robot only
-        part = part.sort_values("asymmetry")
-        on = f", {preset}, {protocol}" if several else ""
-        curves[f"{model} ({variant}, {backend}), {split}{on}"] = (
-            part.asymmetry.tolist(),
-            [spread(row, "rmse_Nm") for _, row in part.iterrows()],
-        )
-    data = None
-    if "data_tau_asym_mean" in rows:
-        measured = rows.dropna(subset=["data_tau_asym_mean"]).groupby("asymmetry")
-        per_dataset = measured.data_tau_asym_mean.first()
-        data = (per_dataset.index.tolist(), per_dataset.tolist())
-    asymmetry_png(curves, data, f"{base}: error against asymmetry", path)
-    return True
-
-
 def write_leaderboard(results: Path, out: Path) -> list[Path]:
     """Aggregate the records under `results` into tables and plots under `out`."""
     return write_tables(load_records(results), out)
@@ -328,11 +262,15 @@ def write_tables(records: list[tuple[Path, RecordV1]], out: Path) -> list[Path]:
         md = out / f"{robot}.md"
         write_text_atomic(md, markdown(table, robot))
         written.append(md)
-        png = out / f"{robot}-sample-efficiency.png"
-        if sample_efficiency_plot(table, robot, png):
+        curves = sample_efficiency_series(table, robot)
+        if curves:
+            png = out / f"{robot}-sample-efficiency.png"
+            write_png(sample_efficiency_figure(curves, f"{robot}: sample efficiency"), png)
             written.append(png)
     for base in sorted({split_variant(r)[0] for r in table.robot.unique()}):
-        png = out / f"{base}-asymmetry.png"
-        if asymmetry_plot(table, base, png):
+        curves, data = asymmetry_series(table, base)
+        if curves:
+            png = out / f"{base}-asymmetry.png"
+            write_png(asymmetry_figure(curves, data, f"{base}: error against asymmetry"), png)
             written.append(png)
     return written

@@ -1,16 +1,31 @@
-"""Plots shared by evaluators and leaderboards (matplotlib, headless)."""
+"""Plots shared by evaluators, the Markdown boards and the site (matplotlib, headless).
+
+Every plot follows the same rules, so that none misleads: a model has one colour on every
+plot and its several entries (variants, backends, protocols) differ by marker, line or hatch
+(`palette`); each point shows the mean over seeds, its 95 % interval and each seed's value;
+a line never joins two points across an x where it has no data; the legend sits beside the
+axes, never on the data. Figures are built without pyplot (no global state, no display) and
+written by `plot_files`.
+"""
 
 from __future__ import annotations
 
-import io
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Generic, TypeVar
 
 import numpy as np
 
-from symbench.core.common.atomic import write_bytes_atomic
+from symbench.core.board.palette import colour_of, styles_of
+from symbench.core.board.plot_files import write_png
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
+HEIGHT = 3.5  # inches, of every figure
+RMSE_LABEL = "test torque RMSE (N m, log scale)"
 
 
 @dataclass(frozen=True)
@@ -24,9 +39,30 @@ class Spread:
     seeds: tuple[float, ...]
 
 
-Curve = tuple[Sequence[float], Sequence[Spread]]  # x, and a spread at each x
+MISSING = Spread(np.nan, np.nan, np.nan, ())
+
+X = TypeVar("X", float, str)
+
+
+@dataclass(frozen=True)
+class Series(Generic[X]):
+    """One entry of a plot: `model` fixes its colour, `label` names it in the legend, and
+    `points` holds its spread at each x (a fraction, an asymmetry) or group (a split)."""
+
+    model: str
+    label: str
+    points: Mapping[X, Spread]
+
+
 # one run's curve (the sample-efficiency evaluator's plot of a single seed): x, values, None
 RunCurve = tuple[Sequence[float], Sequence[float], None]
+
+
+def _figure(width: float, axes: int = 1) -> tuple[Figure, list[Axes]]:
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(width, HEIGHT))
+    return fig, list(fig.subplots(1, axes, squeeze=False)[0])
 
 
 def _yerr(spreads: Sequence[Spread]) -> np.ndarray:
@@ -38,109 +74,140 @@ def _yerr(spreads: Sequence[Spread]) -> np.ndarray:
     return bars
 
 
-def _seed_points(ax: Any, x: Sequence[float], spreads: Sequence[Spread], color: Any) -> None:
-    """Each seed's value as a small dot at its spread's x."""
+def _seed_points(ax: Axes, x: Sequence[float], spreads: Sequence[Spread], colour: str) -> None:
+    """Each seed's value as a small dot at its spread's x, ringed white to show on a bar."""
     xs = [xi for xi, s in zip(x, spreads) for _ in s.seeds]
     ys = [value for s in spreads for value in s.seeds]
-    ax.scatter(xs, ys, s=9, color=color, alpha=0.5, linewidths=0, zorder=3)
+    ax.scatter(xs, ys, s=12, color=colour, edgecolors="white", linewidths=0.5, zorder=3)
 
 
-def _spreads(curve: Curve | RunCurve) -> Curve:
-    """A run's curve as spreads of one value each (no interval, no dots)."""
-    if len(curve) == 2:
-        return curve
-    x, values, _ = curve
-    return x, [Spread(v, np.nan, np.nan, ()) for v in values]
+def draw_curves(ax: Axes, series: Sequence[Series[float]]) -> None:
+    """One line per series over the x of all of them: where a series has no point, its line
+    has NaN and breaks, so it never joins its neighbours across the gap (an isolated point
+    shows as its marker alone)."""
+    grid = sorted({x for s in series for x in s.points})
+    for s, style in zip(series, styles_of([s.model for s in series])):
+        spreads = [s.points.get(x, MISSING) for x in grid]
+        colour = colour_of(s.model)
+        ax.errorbar(
+            grid,
+            [p.mean for p in spreads],
+            yerr=_yerr(spreads),
+            color=colour,
+            marker=style.marker,
+            linestyle=style.linestyle,
+            capsize=3,
+            label=s.label,
+        )
+        _seed_points(ax, grid, spreads, colour)
 
 
-def _curves(ax: Any, curves: Mapping[str, Curve]) -> None:
-    """One line per label: the means with their intervals, and the seeds' dots."""
-    for label, (x, spreads) in curves.items():
-        means = [s.mean for s in spreads]
-        line = ax.errorbar(x, means, yerr=_yerr(spreads), marker="o", capsize=3, label=label)
-        _seed_points(ax, x, spreads, line[0].get_color())
+def draw_bars(ax: Axes, series: Sequence[Series[str]], groups: Sequence[str]) -> None:
+    """A group of bars per group name (a split, say), a bar per series: a series missing from
+    a group leaves a gap, so each keeps its place in every group."""
+    width = 0.8 / max(len(series), 1)
+    for i, (s, style) in enumerate(zip(series, styles_of([s.model for s in series]))):
+        x = [g + (i - (len(series) - 1) / 2) * width for g in range(len(groups))]
+        bars = [s.points.get(group, MISSING) for group in groups]
+        ax.bar(
+            x,
+            [b.mean for b in bars],
+            width,
+            yerr=_yerr(bars),
+            capsize=3,
+            color=colour_of(s.model),
+            hatch=style.hatch,
+            edgecolor="black",
+            linewidth=0.5,
+            label=s.label,
+        )
+        _seed_points(ax, x, bars, "black")
+    ax.set_xticks(range(len(groups)), list(groups))
 
 
-def _pyplot() -> Any:
-    """pyplot on the Agg backend: no display is needed, on servers and in tests."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    return plt
-
-
-def _write_png(fig: Any, path: Path) -> None:
-    """The figure as PNG, written atomically; without the matplotlib version in its
-    metadata, so the same data gives the same bytes."""
-    buffer = io.BytesIO()
-    fig.savefig(buffer, format="png", metadata={"Software": None})
-    _pyplot().close(fig)
-    write_bytes_atomic(path, buffer.getvalue())
+def _finish(fig: Figure) -> Figure:
+    """Axes laid out to fill the figure, and the legend of the first axes' entries beside
+    them, right of the figure (the files are cropped to include it)."""
+    fig.tight_layout()
+    handles, labels = fig.axes[0].get_legend_handles_labels()
+    fig.legend(
+        handles,
+        labels,
+        loc="upper left",
+        bbox_to_anchor=(1.0, 1.0),
+        fontsize=8,
+        frameon=False,
+    )
+    return fig
 
 
-def sample_efficiency_png(curves: Mapping[str, Curve | RunCurve], title: str, path: Path) -> None:
-    """Test RMSE against training fraction, one line per label (mean, 95 % interval and
-    each seed; a run's curve is its values alone), written atomically."""
-    fig, ax = _pyplot().subplots(figsize=(5, 3.5), dpi=120)
-    _curves(ax, {label: _spreads(curve) for label, curve in curves.items()})
+def sample_efficiency_figure(series: Sequence[Series[float]], title: str) -> Figure:
+    """Test RMSE against the fraction of training climbs, a line per series."""
+    fig, (ax,) = _figure(5.0)
+    draw_curves(ax, series)
     ax.set(
-        xlabel="fraction of training trajectories",
-        ylabel="test torque RMSE (N m)",
+        xlabel="fraction of the training climbs (1: all, the iid split)",
+        ylabel=RMSE_LABEL,
         title=title,
         yscale="log",
     )
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    _write_png(fig, path)
+    return _finish(fig)
 
 
-def grouped_bars_png(
-    groups: Mapping[str, Mapping[str, Spread]], ylabel: str, title: str, path: Path
-) -> None:
-    """One group of bars per key of `groups` (a split, say), one bar per label (a model):
-    its mean, 95 % interval and each seed; written atomically. A label missing from a group
-    leaves a gap, so a label keeps its place and colour in every group."""
-    labels = sorted({label for bars in groups.values() for label in bars})
-    width = 0.8 / max(len(labels), 1)
-    missing = Spread(np.nan, np.nan, np.nan, ())
-    fig, ax = _pyplot().subplots(figsize=(max(5, 1.2 * len(groups) + 3), 3.5), dpi=120)
-    for i, label in enumerate(labels):
-        x = [g + (i - (len(labels) - 1) / 2) * width for g in range(len(groups))]
-        bars = [groups[group].get(label, missing) for group in groups]
-        ax.bar(x, [b.mean for b in bars], width, yerr=_yerr(bars), capsize=3, label=label)
-        _seed_points(ax, x, bars, "black")
-    ax.set_xticks(range(len(groups)), list(groups))
-    ax.set(ylabel=ylabel, title=title)
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    _write_png(fig, path)
-
-
-def asymmetry_png(
-    curves: Mapping[str, Curve],
+def asymmetry_figure(
+    series: Sequence[Series[float]],
     data_asymmetry: tuple[Sequence[float], Sequence[float]] | None,
     title: str,
-    path: Path,
-) -> None:
-    """Test RMSE against a robot variant's asymmetry, one line per label (mean, 95 %
-    interval and each seed), and beside it the datasets' own torque asymmetry (relative
-    error between rotated image climbs, one value per dataset), both on log scales; written
-    atomically."""
-    fig, (left, right) = _pyplot().subplots(1, 2, figsize=(9, 3.5), dpi=120)
-    _curves(left, curves)
-    left.set(xlabel="asymmetry A (leg 0 1 + A times as heavy)", ylabel="test torque RMSE (N m)")
-    left.set(title=title, yscale="log")
-    left.legend(fontsize=7)
+) -> Figure:
+    """Test RMSE against a robot variant's asymmetry, a line per series, and beside it the
+    datasets' own torque asymmetry (relative error between rotated image climbs, one value
+    per dataset), both on log scales."""
+    fig, (left, right) = _figure(9.0, axes=2)
+    draw_curves(left, series)
+    left.set(
+        xlabel="asymmetry A (leg 0 is 1 + A times as heavy)",
+        ylabel=RMSE_LABEL,
+        title=title,
+        yscale="log",
+    )
     if data_asymmetry is not None:
         x, asymmetry = data_asymmetry
-        right.plot(x, asymmetry, marker="s", color="black")
+        right.plot(x, asymmetry, marker="s", color="grey")
     right.set(
         xlabel="asymmetry A",
-        ylabel="dataset torque asymmetry (relative)",
+        ylabel="the data's torque asymmetry (relative, log scale)",
         title="the data's own symmetry",
         yscale="log",
     )
-    fig.tight_layout()
-    _write_png(fig, path)
+    return _finish(fig)
+
+
+def bars_figure(
+    series: Sequence[Series[str]],
+    groups: Sequence[str],
+    ylabel: str,
+    title: str,
+    reference: float | None = None,
+) -> Figure:
+    """Grouped bars (`draw_bars`), with a dashed line at `reference` when given (the value
+    that means no effect)."""
+    fig, (ax,) = _figure(max(4.0, 1.2 * len(groups) + 2.5))
+    draw_bars(ax, series, groups)
+    if reference is not None:
+        ax.axhline(reference, color="grey", linestyle="--", linewidth=0.8, zorder=0)
+    ax.set(ylabel=ylabel, title=title)
+    return _finish(fig)
+
+
+def sample_efficiency_png(curves: Mapping[str, RunCurve], title: str, path: Path) -> None:
+    """A run's test RMSE against training fraction, a line per label, written atomically; a
+    label's model, its text before ' (', fixes the line's colour."""
+    series = [
+        Series(
+            label.split(" (")[0],
+            label,
+            {x: Spread(v, np.nan, np.nan, ()) for x, v in zip(fractions, values)},
+        )
+        for label, (fractions, values, _) in curves.items()
+    ]
+    write_png(sample_efficiency_figure(series, title), path)

@@ -35,7 +35,7 @@ def board_page(robot: str, dataset: str) -> str:
 
 
 def plot_file(robot: str, dataset: str, plot: str) -> str:
-    return f"boards/{slug(robot, dataset)}-{slug(plot)}.png"
+    return f"boards/{slug(robot, dataset)}-{slug(plot)}.svg"
 
 
 def clip_file(robot: str, dataset: str, role: str, model: str) -> str:

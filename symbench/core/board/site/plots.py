@@ -1,6 +1,7 @@
-"""A board page's plots, drawn into the site as PNG: the sample-efficiency curve (the
-Markdown board's own plot) and the closed loop's headline metric per split. A plot without
-data is absent, and its caption says why."""
+"""A board page's plots, drawn into the site as SVG: the sample-efficiency curve (the
+Markdown board's own plot, from the same series), the closed loop's headline metric per
+split, and each model's generalization gap (`gap`). A plot without data is absent, and its
+caption says why; a drawn plot's alt text says what it shows and its result."""
 
 from __future__ import annotations
 
@@ -9,24 +10,29 @@ from pathlib import Path
 
 import pandas as pd
 
-from symbench.core.board.leaderboard import COLUMNS, sample_efficiency_plot, spread
-from symbench.core.board.plots import Spread, grouped_bars_png
+from symbench.core.board.gap import GAP_SPLIT, generalization_gaps
+from symbench.core.board.leaderboard import COLUMNS
+from symbench.core.board.plot_files import write_svg
+from symbench.core.board.plots import bars_figure, sample_efficiency_figure
+from symbench.core.board.series import sample_efficiency_series, split_bars
 from symbench.core.board.site import names
-from symbench.core.board.summary import split_order
+from symbench.core.board.site.alt_text import ranking
 
-# the closed loop's headline, best first: the score between the PD alone (0) and the
-# expert's feedforward (1), else the seconds held, both at the headline PD fraction
+# the closed loop's headline, best first, with its axis label: the score between the PD
+# alone (0) and the expert's feedforward (1), else the seconds held, both at the headline PD
+# fraction; higher is better for both
 CLOSED_LOOP_HEADLINES = (
-    ("closed-loop", "pd_normalized_score"),
-    ("closed-loop", "pd_time_to_failure_s"),
+    ("closed-loop", "pd_normalized_score", "closed-loop score (0 = PD alone, 1 = expert)"),
+    ("closed-loop", "pd_time_to_failure_s", "seconds held on the wall (closed loop)"),
 )
 
 
 @dataclass(frozen=True)
 class Plot:
     title: str
-    path: str | None  # the PNG, relative to the site's root; None when there is no data
+    path: str | None  # the SVG, relative to the site's root; None when there is no data
     caption: str  # what the plot shows, or why it is absent
+    alt: str = ""  # the plot's result in a sentence, for readers who cannot see it
 
 
 def draw_plots(rows: pd.DataFrame, robot: str, dataset: str, site: Path) -> tuple[Plot, ...]:
@@ -34,25 +40,32 @@ def draw_plots(rows: pd.DataFrame, robot: str, dataset: str, site: Path) -> tupl
     return (
         _sample_efficiency(rows, robot, dataset, site),
         _closed_loop(rows, robot, dataset, site),
+        _generalization_gap(rows, robot, dataset, site),
     )
 
 
 def _sample_efficiency(rows: pd.DataFrame, robot: str, dataset: str, site: Path) -> Plot:
     title = "Sample efficiency"
-    path = names.plot_file(robot, dataset, "sample-efficiency")
-    if not sample_efficiency_plot(rows, robot, site / path):
+    series = sample_efficiency_series(rows, robot)
+    if not series:
         return Plot(title, None, "No plot: no record of a fraction-F split on this dataset.")
+    path = names.plot_file(robot, dataset, "sample-efficiency")
+    write_svg(sample_efficiency_figure(series, f"{robot}: sample efficiency"), site / path)
+    fractions = sorted({x for s in series for x in s.points})
+    result = ranking(series, fractions, "fraction", "lowest error", "highest error", True)
     return Plot(
         title,
         path,
         "Test torque RMSE (mean, 95 % bootstrap interval and each seed's value) against the "
-        "fraction of training trajectories; iid is the fraction 1.",
+        "fraction of training climbs; iid is the fraction 1. A line breaks where its entry "
+        "has no record.",
+        f"Test torque RMSE against the fraction of training climbs. {result}",
     )
 
 
 def _closed_loop(rows: pd.DataFrame, robot: str, dataset: str, site: Path) -> Plot:
     title = "Closed loop"
-    for evaluator, metric in CLOSED_LOOP_HEADLINES:
+    for evaluator, metric, label in CLOSED_LOOP_HEADLINES:
         column = COLUMNS.get((evaluator, metric))
         if column is None or f"{column}_mean" not in rows:
             continue
@@ -60,33 +73,47 @@ def _closed_loop(rows: pd.DataFrame, robot: str, dataset: str, site: Path) -> Pl
         if measured.empty:
             continue
         path = names.plot_file(robot, dataset, "closed-loop")
-        grouped_bars_png(
-            _bars(measured, column),
-            f"{metric} (mean, 95 % CI, seeds)",
-            f"{robot}, {dataset}: closed loop",
-            site / path,
-        )
+        series, splits = split_bars(measured, column)
+        write_svg(bars_figure(series, splits, label, f"{robot}: closed loop"), site / path)
+        result = ranking(series, splits, "split", "highest", "lowest", False)
         return Plot(
             title,
             path,
-            f"Each model's closed-loop {metric} per split (the {evaluator} evaluator at "
-            "the headline PD fraction).",
+            f"Each model's {label} per split (mean, 95 % bootstrap interval and each seed's "
+            f"value; the {evaluator} evaluator at the headline PD fraction).",
+            f"The {label} per split. {result}",
         )
     return Plot(
         title, None, "No plot: no record on this dataset has closed-loop metrics (run --full)."
     )
 
 
-def _bars(rows: pd.DataFrame, column: str) -> dict[str, dict[str, Spread]]:
-    """split -> model label -> its spread over seeds; the protocol joins the label when
-    there are several, so that no two rows share a bar."""
-    protocols = rows.protocol.nunique() > 1
-    groups: dict[str, dict[str, Spread]] = {}
-    for split in sorted(rows.split.unique(), key=split_order):
-        groups[split] = {
-            f"{r.model} ({r.variant}, {r.backend}"
-            + (f", {r.protocol}" if protocols else "")
-            + ")": spread(r, column)
-            for _, r in rows[rows.split == split].iterrows()
-        }
-    return groups
+def _generalization_gap(rows: pd.DataFrame, robot: str, dataset: str, site: Path) -> Plot:
+    title = "Generalization gap"
+    gaps = generalization_gaps(rows)
+    if gaps is None:
+        return Plot(
+            title,
+            None,
+            f"No plot: no model has records of both {GAP_SPLIT} and its control or iid "
+            "on this dataset.",
+        )
+    path = names.plot_file(robot, dataset, "generalization-gap")
+    label = f"test RMSE on {GAP_SPLIT} / on {gaps.control}"
+    figure = bars_figure(gaps.series, gaps.protocols, label, f"{robot}: generalization gap", 1.0)
+    write_svg(figure, site / path)
+    result = ranking(gaps.series, gaps.protocols, "protocol", "smallest gap", "largest gap", True)
+    return Plot(
+        title,
+        path,
+        f"Each model's test RMSE on {GAP_SPLIT} over its test RMSE on {gaps.control}, seed by "
+        "seed (mean, 95 % bootstrap interval and each seed's ratio), per training protocol; "
+        "1 (dashed): the unseen rotations cost nothing."
+        + (
+            ""
+            if gaps.control != "iid"
+            else " No record of the size-matched control: iid trains on more climbs, so "
+            "this ratio overstates the gap."
+        ),
+        f"The ratio of test RMSE on {GAP_SPLIT} to {gaps.control} per protocol. {result}",
+    )
