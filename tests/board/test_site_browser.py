@@ -151,6 +151,7 @@ def test_a_model_links_to_its_entry_page_with_the_records_provenance(tab, site, 
     runs = runs_of(results, HEXA, "converge", "iid", "ffnn")
     for seed, run in zip(SEEDS, runs):
         section = tab.page.locator(f"#seed-{seed}")
+        section.locator("details.fold summary").first.click()  # the provenance is folded
         shown = section.inner_text()
         assert run["dataset"]["content_hash"] in shown
         assert run["training"]["checkpoint_sha256"]["model.safetensors"] in shown
@@ -168,4 +169,45 @@ def test_a_model_links_to_its_entry_page_with_the_records_provenance(tab, site, 
             .startswith("Verification status: sealed, seal matches; not on the published board")
         )
     screenshot(tab, "site-entry-page.png")
+    assert tab.errors == []
+
+
+ENTRY_PAGE = f"entries/{HEXA}__converge__iid__ffnn__acc__torch.html"
+# this page's height at 1280 px before the raw values were folded: 7,417 px (now ~1,900)
+ENTRY_HEIGHT_PX = 3000
+
+
+def page_width(tab: Tab) -> int:
+    return tab.page.evaluate("document.documentElement.scrollWidth")
+
+
+def test_an_entry_page_fits_a_phone_with_its_summary_on_the_first_screen(tab, site):
+    tab.page.set_viewport_size({"width": 420, "height": 800})
+    tab.page.goto((site / ENTRY_PAGE).as_uri())
+    assert page_width(tab) <= 420
+    summary = tab.page.locator("table.seeds")
+    assert summary.is_visible()
+    box = summary.bounding_box()
+    assert box is not None and box["y"] < 800
+    for details in tab.page.locator("details").all():  # the raw values too, once opened
+        details.evaluate("details => { details.open = true }")
+    assert tab.page.locator("pre.raw").first.is_visible()
+    assert page_width(tab) <= 420
+    screenshot(tab, "site-entry-page-420px.png")
+    assert tab.errors == []
+
+
+def test_an_entry_page_is_short_with_its_raw_values_folded_until_clicked(tab, site, results):
+    tab.page.set_viewport_size({"width": 1280, "height": 900})
+    tab.page.goto((site / ENTRY_PAGE).as_uri())
+    assert tab.page.evaluate("document.documentElement.scrollHeight") < ENTRY_HEIGHT_PX
+    assert tab.page.locator("details[open]").count() == 0
+    provenance = tab.page.locator("#seed-0 details.fold").first
+    table = provenance.locator("table.provenance").first
+    assert not table.is_visible()
+    provenance.locator("summary").click()
+    assert provenance.evaluate("details => details.open")
+    assert table.is_visible()
+    (run, *_) = runs_of(results, HEXA, "converge", "iid", "ffnn")
+    assert run["seal"] in provenance.inner_text()
     assert tab.errors == []

@@ -7,7 +7,7 @@ import re
 from typing import NamedTuple
 
 INDEX = "index.html"
-STATIC = ("site.css", "site.js")  # copied from the package's static/ into the site's static/
+STATIC = ("site.css", "site.js", "entry.css")  # the package's static/, copied to the site's
 MARKER = ".symbench-site"  # marks a folder as a site that a new build may replace whole
 _UNSAFE = re.compile(r"[^A-Za-z0-9._-]+")
 _NOT_IN_ID = re.compile(r"[^A-Za-z0-9_-]+")  # '.' too: an id is also a CSS selector

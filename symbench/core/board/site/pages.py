@@ -17,6 +17,7 @@ from symbench.core.board.leaderboard import COLUMNS, MIN_SEEDS, protocol_of
 from symbench.core.board.site import names
 from symbench.core.board.site.names import GroupKey
 from symbench.core.board.site.provenance import Provenance, provenance
+from symbench.core.board.site.seeds import SeedSummary, seed_summary
 from symbench.core.board.summary import split_order
 from symbench.core.runs.results import RecordV1
 
@@ -76,7 +77,7 @@ class BoardPage:
 
 @dataclass(frozen=True)
 class EntryPage:
-    """One row of a board table, with the provenance of each of its seeds."""
+    """One row of a board table: its seeds side by side, then the provenance of each."""
 
     key: GroupKey
     robot: str
@@ -85,6 +86,7 @@ class EntryPage:
     board: str  # the board page, at the row's table
     columns: tuple[Column, ...]
     row: Row
+    summary: SeedSummary
     runs: tuple[Provenance, ...]
 
 
@@ -204,6 +206,7 @@ def entry_pages(
             for split_table in section.tables:
                 for row in split_table.rows:
                     seeds = sorted(runs[row.key], key=lambda run: run[1].seed)
+                    shown = [(r, provenance(p, r, board)) for p, r in seeds]
                     pages.append(
                         EntryPage(
                             key=row.key,
@@ -213,7 +216,8 @@ def entry_pages(
                             board=f"{page.path}#{split_table.anchor}",
                             columns=page.columns,
                             row=row,
-                            runs=tuple(provenance(p, r, board) for p, r in seeds),
+                            summary=seed_summary(shown),
+                            runs=tuple(run for _, run in shown),
                         )
                     )
     return pages

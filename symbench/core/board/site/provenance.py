@@ -1,16 +1,18 @@
 """Everything one record says about where its numbers come from, as labelled values for the
 entry pages, with its verification status: whether its seal matches (`read_record`) and
-whether the published board holds it. Schema-1 records lack fields: those read "not
-recorded"."""
+whether the published board holds it, in full and in a word for the seeds' summary. Its
+metrics as `metrics.evaluator_metrics` shows them. Schema-1 records lack fields: those read
+"not recorded"."""
 
 from __future__ import annotations
 
 import json
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, NamedTuple
 
 from symbench.core.board.leaderboard import RECORDS, protocol_of
+from symbench.core.board.site.metrics import EvaluatorMetrics, evaluator_metrics
 from symbench.core.board.site.reproduce import run_command, verify_command
 from symbench.core.common.errors import SymbenchError
 from symbench.core.runs.results import RecordV1, read_display_record, read_record
@@ -19,23 +21,32 @@ NOT_RECORDED = "not recorded (schema 1)"
 Fields = tuple[tuple[str, str], ...]  # (label, value) in the order shown
 
 
+class Status(NamedTuple):
+    ok: bool
+    text: str
+
+
 @dataclass(frozen=True)
 class Provenance:
     seed: int
     record: str  # the record file, as the command was given it
     seal: str  # "sealed, seal matches" or what is wrong
     board: str  # whether the published board holds this record
+    verdict: str  # both in a few words: "sealed, on the board"
     sections: tuple[tuple[str, Fields], ...]  # (title, fields)
+    metrics: tuple[EvaluatorMetrics, ...]
     reproduce: str
     verify: str
 
 
 def provenance(path: Path, record: RecordV1, board: Path) -> Provenance:
+    seal, published = seal_status(path), board_status(record, board)
     return Provenance(
         seed=record.seed,
         record=str(path),
-        seal=seal_status(path),
-        board=board_status(record, board),
+        seal=seal.text,
+        board=published.text,
+        verdict=verdict(seal.ok, published.ok),
         sections=(
             ("Record", _record(record)),
             ("Model", _model(record)),
@@ -44,37 +55,47 @@ def provenance(path: Path, record: RecordV1, board: Path) -> Provenance:
             ("Training", _training(record)),
             ("Training configuration", _config(record)),
             ("Checkpoint", _checkpoint(record)),
-            ("Metrics", _metrics(record)),
             ("Timings (s)", _mapping(record.timings_s)),
             ("Hardware", _mapping(record.hardware)),
             ("Versions", _mapping(record.versions)),
         ),
+        metrics=evaluator_metrics(record.metrics),
         reproduce=run_command(record),
         verify=verify_command(path),
     )
 
 
-def seal_status(path: Path) -> str:
+def seal_status(path: Path) -> Status:
     """Read as `symbench publish` and `symbench verify` read it: sealed and unchanged."""
     try:
         read_record(path)
     except SymbenchError as exc:
-        return f"not verified: {exc}"
-    return "sealed, seal matches"
+        return Status(False, f"not verified: {exc}")
+    return Status(True, "sealed, seal matches")
 
 
-def board_status(record: RecordV1, board: Path) -> str:
+def board_status(record: RecordV1, board: Path) -> Status:
     """Whether the board's record under this run's key is this very record."""
     published = board / RECORDS / f"{record.key()}.json"
     if not published.is_file():
-        return f"not on the published board (no {published})"
+        return Status(False, f"not on the published board (no {published})")
     try:
         same = read_display_record(published) == record
     except SymbenchError as exc:
-        return f"not on the published board: its record for this run is unreadable ({exc})"
+        return Status(
+            False, f"not on the published board: its record for this run is unreadable ({exc})"
+        )
     if same:
-        return f"on the published board ({published})"
-    return f"not on the published board: {published} is a different record of this run"
+        return Status(True, f"on the published board ({published})")
+    return Status(
+        False, f"not on the published board: {published} is a different record of this run"
+    )
+
+
+def verdict(sealed: bool, published: bool) -> str:
+    if not sealed:
+        return "not verified"
+    return "sealed, on the board" if published else "sealed, not on the board"
 
 
 def text(value: Any) -> str:
@@ -173,12 +194,3 @@ def _checkpoint(r: RecordV1) -> Fields:
     if hashes is None:
         return (("checkpoint", NOT_RECORDED),)
     return tuple((f"{name} SHA-256", hashes[name]) for name in sorted(hashes))
-
-
-def _metrics(r: RecordV1) -> Fields:
-    """Every metric of every evaluator, in the record's order."""
-    return tuple(
-        (f"{evaluator} · {name}", text(value))
-        for evaluator, metrics in r.metrics.items()
-        for name, value in metrics.items()
-    )
