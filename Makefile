@@ -5,7 +5,7 @@ VENV := .venv
 STAMP := $(VENV)/.installed
 export MUJOCO_GL ?= disable
 
-.PHONY: run test test-slow check bench clean
+.PHONY: run test test-slow check bench screenshots clean
 
 $(STAMP): pyproject.toml constraints.txt examples/symbench-example-plugin/pyproject.toml \
 		examples/symbench-e2cnn/pyproject.toml
@@ -33,6 +33,10 @@ test-slow: $(STAMP)
 bench: $(STAMP)
 	$(VENV)/bin/symbench bench sim --robot hexa
 	$(VENV)/bin/symbench bench models
+
+# The docs' screenshots of the committed site (needs Debian's chromium)
+screenshots: $(STAMP)
+	$(VENV)/bin/python docs/images/take_screenshots.py
 
 clean:
 	rm -rf $(VENV)

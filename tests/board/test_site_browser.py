@@ -1,5 +1,7 @@
 """The site in a real browser, opened from disk (file://) as a reader opens a downloaded
-site: sorting, the model filter, a model's link to its entry page, the plots and the styles
+site: the overview first on screen (also 420 px wide, without sideways scrolling of the
+page), sorting (best first), the sticky model column, the model filter and the view kept in
+the address, the compare page, a model's link to its entry page, the plots and the styles
 load, no script error; screenshots of a board page and an entry page are kept as artifacts
 (test-artifacts/, or $SYMBENCH_TEST_ARTIFACTS). Slow: `pytest -m slow tests/board`.
 
@@ -15,10 +17,11 @@ from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
+from urllib.parse import parse_qs, urlsplit
 
 import numpy as np
 import pytest
-from site_records import HEXA, MODELS, SEEDS, SPLITS, metric, runs_of, table_id
+from site_records import HEXA, LEGACY_MODEL, MODELS, SEEDS, SPLITS, metric, runs_of, table_id
 from system_packages import ensure_chromium
 
 pytestmark = pytest.mark.slow
@@ -106,26 +109,112 @@ def test_sorting_orders_rows_by_the_records_means(tab, site, results):
     tab.page.locator('#converge--iid th[data-column="model"]').click()
     assert shown_models(tab, "converge--iid") == sorted(MODELS)  # text: by name
     score = mean_of(results, "iid", "closed-loop", "pd_normalized_score")
-    tab.page.locator('#converge--iid th[data-column="cl_score"]').click()
-    assert shown_models(tab, "converge--iid") == sorted(MODELS, key=score.__getitem__)
+    by_score = sorted(MODELS, key=score.__getitem__, reverse=True)
+    assert by_score != shown_models(tab, "converge--iid")
+    header = tab.page.locator('#converge--iid th[data-column="cl_score"]')
+    header.click()  # higher is better: the first click puts the highest first
+    assert shown_models(tab, "converge--iid") == by_score
+    assert header.get_attribute("aria-sort") == "descending"
     unseen = mean_of(results, "unseen-heading", "torque-error", "rmse")
     # a click sorts its own table only
     assert shown_models(tab, "converge--unseen-heading") == sorted(MODELS, key=unseen.get)
     assert tab.errors == []
 
 
-def test_the_model_filter_hides_other_models_in_every_table(tab, site):
+def test_the_model_filter_hides_other_models_and_the_address_keeps_the_view(tab, site):
     tab.page.goto((site / HEXA_PAGE).as_uri())
     every = tab.page.locator("table.board tbody tr")
     total = every.count()
     assert total == len(MODELS) * len(SPLITS) + 1  # and the schema-1 model's row
-    tab.page.select_option("#model-filter", "gnn")
+    for model in ("sdnn", "ffnn", LEGACY_MODEL):
+        tab.page.locator(f'#model-filter input[value="{model}"]').uncheck()
     for split in SPLITS:
         assert shown_models(tab, table_id("converge", split)) == ["gnn"]
     assert shown_models(tab, "paper--iid") == []
+    tab.page.locator('#converge--iid th[data-column="nrmse"]').click()
+    query = parse_qs(urlsplit(tab.page.url).query)
+    assert query["models"] == ["gnn"]
+    assert query["sort"] == ["converge--iid:nrmse:ascending"]
+    tab.page.reload()
+    assert tab.page.locator("#model-filter input:checked").evaluate_all(
+        "boxes => boxes.map(box => box.value)"
+    ) == ["gnn"]
     assert tab.page.locator("table.board tbody tr:visible").count() == len(SPLITS)
-    tab.page.select_option("#model-filter", "")
+    header = tab.page.locator('#converge--iid th[data-column="nrmse"]')
+    assert header.get_attribute("aria-sort") == "ascending"  # the sort came back too
+    for model in ("sdnn", "ffnn", LEGACY_MODEL):
+        tab.page.locator(f'#model-filter input[value="{model}"]').check()
     assert tab.page.locator("table.board tbody tr:visible").count() == total
+    assert "models" not in parse_qs(urlsplit(tab.page.url).query)  # all shown: no filter
+    assert tab.errors == []
+
+
+def test_the_model_column_stays_in_view_when_a_table_scrolls_sideways(tab, site):
+    tab.page.set_viewport_size({"width": 600, "height": 900})
+    tab.page.goto((site / HEXA_PAGE).as_uri())
+    box = tab.page.locator("#converge--iid .table-scroll")
+    assert box.evaluate("box => box.scrollWidth > box.clientWidth")  # it does scroll
+    model = tab.page.locator("#converge--iid tr[data-model=sdnn] td.model")
+    rmse = tab.page.locator("#converge--iid tr[data-model=sdnn] td").nth(2)
+    before = model.bounding_box()["x"], rmse.bounding_box()["x"]
+    box.evaluate("box => { box.scrollLeft = 200; }")
+    after = model.bounding_box()["x"], rmse.bounding_box()["x"]
+    assert after[0] == pytest.approx(before[0], abs=1)  # the model stays (to its border)
+    assert after[1] < before[1] - 100  # the rest moves
+    assert tab.errors == []
+
+
+def test_the_overview_shows_its_table_first(tab, site):
+    tab.page.goto((site / "index.html").as_uri())
+    first = tab.page.locator("main table").first
+    assert (
+        first.evaluate("table => table.closest('section').id")
+        == f"overview--hexa--{HEXA}--converge"
+    )
+    top = first.bounding_box()["y"]
+    assert top < 900 * 0.75  # within the first screen, not below an introduction
+    assert shown_models(tab, f"overview--hexa--{HEXA}--converge") == ["sdnn", "gnn", "ffnn"]
+    thumbnails = tab.page.locator(f"#dataset--hexa--{HEXA} figure.thumb img")
+    assert thumbnails.count() == 2
+    for image in thumbnails.all():
+        assert image.evaluate("img => img.complete && img.naturalWidth > 0")
+    screenshot(tab, "site-index-page.png")
+    assert tab.errors == []
+
+
+def test_the_overview_fits_a_narrow_screen(browser, site):
+    page = browser.new_page(viewport={"width": 420, "height": 900})
+    errors: list[str] = []
+    page.on("pageerror", lambda error: errors.append(str(error)))
+    page.goto((site / "index.html").as_uri())
+    assert page.evaluate("document.documentElement.scrollWidth") <= 420
+    assert page.locator("main table").first.bounding_box()["y"] < 900
+    page.screenshot(path=str(ARTIFACTS / "site-index-420px.png"), full_page=False)
+    page.close()
+    assert errors == []
+
+
+def test_the_compare_page_shows_the_chosen_entries_side_by_side(tab, site, results):
+    tab.page.goto((site / HEXA_PAGE).as_uri())
+    for model in ("sdnn", "ffnn"):
+        tab.page.locator(f"#converge--iid tr[data-model={model}] input.compare").check()
+    assert tab.page.locator("#compare-count").inner_text() == "2 chosen"
+    tab.page.locator("#compare-link").click()
+    tab.page.wait_for_load_state()
+    assert urlsplit(tab.page.url).path.endswith("/compare.html")
+    headers = tab.page.locator("table.compare thead th[data-entry]")
+    assert headers.evaluate_all("cells => cells.map(cell => cell.dataset.entry)") == [
+        f"{HEXA}__converge__iid__{model}__acc__torch" for model in ("sdnn", "ffnn")
+    ]
+    rmse = tab.page.locator('table.compare tr[data-metric="rmse_Nm"] td')
+    means = mean_of(results, "iid", "torque-error", "rmse")
+    shown = [float(text.split(" ")[0]) for text in rmse.all_inner_texts()]
+    assert shown == pytest.approx([means["sdnn"], means["ffnn"]], abs=5e-4)
+    first_rows = tab.page.locator("table.compare tbody tr").evaluate_all(
+        "rows => rows.slice(0, 3).map(row => row.dataset.metric)"
+    )
+    assert first_rows == ["rank", "rmse_Nm", "cl_score"]  # the headline first
+    screenshot(tab, "site-compare-page.png")
     assert tab.errors == []
 
 

@@ -218,7 +218,7 @@ def test_the_summary_shows_training_time_where_records_have_it(make_record, tmp_
         read = read_record(path)
         runs.append((read, provenance(path, read, tmp_path / "board")))
     summary = seed_summary(runs)
-    time = [c.header for c in summary.columns].index("training (s)")
+    time = [c.header for c in summary.columns].index("wall time training (s)")
     assert [row.cells[time] for row in summary.rows] == ["10.0", "20.0", "60.0"]
     assert summary.mean[time] == ("30.0", "[10.0, 60.0]")
     assert summary.over == "3 seeds"

@@ -5,8 +5,10 @@ The pages are read back with the standard library's HTML parser (html_pages.py).
 
 from __future__ import annotations
 
+import html
 import json
 import posixpath
+import re
 import shutil
 from pathlib import Path
 from urllib.parse import urlsplit
@@ -14,6 +16,7 @@ from urllib.parse import urlsplit
 import numpy as np
 import pytest
 from html_pages import Page, Table, read_page
+from scipy import stats
 from site_records import (
     HEXA,
     LEGACY_MODEL,
@@ -26,7 +29,7 @@ from site_records import (
     table_id,
 )
 
-from symbench.core.board.cells import metric_cell
+from symbench.core.board.cells import count, metric_cell
 from symbench.core.board.site import build_site
 from symbench.core.runs.results import ResultRecord, write_record
 
@@ -116,9 +119,8 @@ def test_tables_show_the_records_means_ranked_by_rmse(site, results):
                 assert float(cell.value or "nan") == pytest.approx(np.mean(values), rel=1e-12)
                 # three seeds: the 95 % bootstrap interval is their range
                 assert cell.text == metric_cell(np.mean(values), min(values), max(values))
-            assert table.cell(row, "seeds").value == str(len(SEEDS))
-            assert table.cell(row, "steps").value == str(np.mean([20 + 10 * s for s in SEEDS]))
             score = table.cell(row, "cl_score").value
+            assert table.columns[:4] == ["model", "rank", "rmse_Nm", "cl_score"]  # headline first
             if split == "iid":
                 scores = metric(runs, "closed-loop", "pd_normalized_score")
                 assert float(score or "nan") == pytest.approx(np.mean(scores), rel=1e-12)
@@ -136,8 +138,8 @@ def test_protocols_have_their_own_tables_and_the_filter_lists_the_models(site, r
         np.mean(metric(runs, "torque-error", "rmse"))
     )
     assert legacy.cell(legacy.rows[0], "steps").value == ""  # schema 1 kept no steps
-    assert hexa.options == ["", *sorted([*MODELS, LEGACY_MODEL])]
-    assert read_page(site / NONA_PAGE).options == ["", "sdnn"]
+    assert hexa.options == sorted([*MODELS, LEGACY_MODEL])
+    assert read_page(site / NONA_PAGE).options == ["sdnn"]
 
 
 def test_plots_are_drawn_or_their_absence_explained(site):
@@ -244,3 +246,137 @@ def test_a_rebuild_replaces_the_site_whole(site, results, board, tmp_path):
     assert not (site / "entries" / "stale.html").exists()
     assert sorted(p for p in site.rglob("*") if p.is_file()) == written
     assert [p.name for p in tmp_path.iterdir() if p.name.startswith(".")] == []  # no staging
+
+
+def test_columns_constant_over_a_table_are_folded_into_its_caption(site):
+    hexa = read_page(site / HEXA_PAGE)
+    iid = hexa.tables["converge--iid"]
+    for folded in ("variant", "backend", "seeds", "steps", "stopped_by", "parameters"):
+        assert folded not in iid.columns
+    steps = metric_cell(30.0, 20.0, 40.0)  # every model: seeds 0-2 trained 20, 30, 40 steps
+    said = (
+        "converge protocol, split iid. Every row: variant acc, backend torch, cl_success "
+        f"0.500, cl_rmse_rad 0.0200, parameters 1\u202f234, steps {steps}, epochs 3.00, "
+        "stopped_by patience 3, seeds 3"
+    )
+    assert hexa.captions[0] == " ".join(said.split())  # as the reader joins white space
+    # no closed loop off iid: those columns are left out, not said to hold '-'
+    assert "cl_success" not in hexa.captions[1]
+    legacy = hexa.tables["paper--iid"]  # one row: nothing is folded
+    assert {"variant", "backend", "seeds"} <= set(legacy.columns)
+
+
+def test_headers_say_which_direction_is_better(site):
+    table = read_page(site / HEXA_PAGE).tables["converge--iid"]
+    assert table.better["rmse_Nm"] == table.better["nrmse"] == table.better["rank"] == "lower"
+    assert table.better["cl_score"] == table.better["cl_held_s"] == "higher"
+    legacy = read_page(site / HEXA_PAGE).tables["paper--iid"]
+    assert table.better["model"] == legacy.better["epochs"] == legacy.better["seeds"] == ""
+    text = (site / HEXA_PAGE).read_text()
+    assert 'rmse_Nm <span class="better" aria-hidden="true">↓</span>' in text
+    assert '<span class="visually-hidden">(higher is better)</span>' in text
+    glossary = read_page(site / HEXA_PAGE).texts["glossary"][0]
+    assert "cl_score ↑ Higher is better. Closed-loop score of the time held" in glossary
+
+
+@pytest.mark.parametrize(
+    ("mean", "low", "high", "shown"),
+    [
+        (0.0150, 0.0141, 0.0162, "0.0150 [0.0141, 0.0162]"),
+        (10000.0, 10000.0, 10000.0, "10\u202f000"),  # no '1e+04', no empty interval
+        (9667.0, 9000.0, 10240.0, "9\u202f667 [9\u202f000, 10\u202f240]"),
+        (3.067e-07, 3.063e-07, 3.07e-07, "3.07 \u00d7 10⁻⁷ [3.06 \u00d7 10⁻⁷, 3.07 \u00d7 10⁻⁷]"),
+        (0.5, np.nan, np.nan, "0.500"),  # one seed: no interval
+        (np.nan, np.nan, np.nan, "-"),
+    ],
+)
+def test_numbers_are_plain_decimals_to_significant_digits(mean, low, high, shown):
+    assert metric_cell(mean, low, high) == shown
+
+
+def test_counts_have_their_plural():
+    assert [count(1, "dataset"), count(3, "dataset"), count(10000, "step")] == [
+        "1 dataset",
+        "3 datasets",
+        "10\u202f000 steps",
+    ]
+
+
+def test_the_overview_comes_first_with_the_headline_of_every_dataset(site, results):
+    index = read_page(site / "index.html")
+    converge = index.tables[f"overview--hexa--{HEXA}--converge"]
+    assert next(iter(index.tables)) == f"overview--hexa--{HEXA}--converge"  # first on the page
+    assert converge.columns == [
+        "model",
+        "equivariant",
+        *(f"rmse_Nm--{split}" for split in SPLITS),
+        "cl_score--iid",  # the closed loop ran on iid only
+    ]
+    assert [row.model for row in converge.rows] == ["sdnn", "gnn", "ffnn"]  # rank on iid
+    for row in converge.rows:
+        assert converge.cell(row, "equivariant").text == ("yes" if row.model == "sdnn" else "no")
+        for split in SPLITS:
+            cell = converge.cell(row, f"rmse_Nm--{split}")
+            rmse = metric(
+                runs_of(results, HEXA, "converge", split, row.model), "torque-error", "rmse"
+            )
+            assert float(cell.value or "nan") == pytest.approx(np.mean(rmse), rel=1e-12)
+            assert cell.best == (row.model == "sdnn")  # the records tell the three apart
+            assert cell.link == (f"entries/{HEXA}__converge__{split}__{row.model}__acc__torch.html")
+    assert index.tables[f"overview--nona--{NONA}--paper"].columns[2:] == ["rmse_Nm--iid"]
+    boards = {urlsplit(link).path for link in index.links}
+    assert {HEXA_PAGE, NONA_PAGE} <= boards  # the board pages stay linked
+
+
+def test_the_findings_are_written_from_the_table(site, results):
+    findings = read_page(site / "index.html").texts["findings"]
+    rmse = {
+        m: metric(runs_of(results, HEXA, "converge", "iid", m), "torque-error", "rmse")
+        for m in ("sdnn", "gnn")
+    }
+    logs = np.log(rmse["sdnn"]) - np.log(rmse["gnn"])  # paired by seed
+    half = stats.t.ppf(0.975, len(logs) - 1) * logs.std(ddof=1) / np.sqrt(len(logs))
+    ratio = metric_cell(*np.exp([logs.mean(), logs.mean() - half, logs.mean() + half]), 2)
+    sdnn, gnn = (metric_cell(np.mean(v), min(v), max(v)) for v in rmse.values())
+    # sdnn is the equivariant one, gnn the best that is not (site_records)
+    assert findings[0].startswith(
+        f"On hexa iid, sdnn's test error is {ratio} \u00d7 gnn's ({sdnn} against {gnn} N m); a "
+        "paired t-test over seeds tells them apart."
+    )
+    assert "Closed loop on iid: the highest cl_score is sdnn's" in findings[0]
+    assert "Only sdnn has records here: nothing to compare it with." in findings[-1]
+
+
+def test_the_overview_defines_each_split_and_score(site):
+    text = " ".join(read_page(site / "index.html").texts["glossary"])
+    assert "iid held-out trajectories of the same scenario distribution" in text
+    assert "fraction-0.5 iid with 0.5 of its training trajectories (sample efficiency)" in text
+    assert "cl_score Closed-loop score of the time held: 0 is the PD alone (the floor)" in text
+    assert "rmse_Nm Test torque RMSE in N m" in text
+
+
+def test_the_plots_alt_texts_say_which_model_is_best(site):
+    def alts(page: Path) -> list[str]:
+        return re.findall(r'<img src="[^"]*\.svg" alt="([^"]*)"', page.read_text())
+
+    shown = alts(site / HEXA_PAGE)
+    assert len(shown) == 2  # sample efficiency and closed loop; no control split: no gap
+    assert "sdnn (acc, torch, converge) has the lowest error at every fraction" in html.unescape(
+        shown[0]
+    )
+    assert "The highest: sdnn (acc, torch)" in html.unescape(shown[1])
+    assert set(shown) <= set(alts(site / "index.html"))  # the overview's thumbnails say it too
+
+
+def test_the_compare_data_holds_every_entry_with_its_headline_first(site):
+    script = (site / "data" / "entries.js").read_text()
+    prefix = "window.SYMBENCH_ENTRIES = "
+    assert script.startswith(prefix) and script.endswith(";\n")
+    data = json.loads(script.removeprefix(prefix).removesuffix(";\n"))
+    entries = {p.stem for p in (site / "entries").glob("*.html")}
+    assert set(data) == entries
+    ffnn = data[f"{HEXA}__converge__iid__ffnn__acc__torch"]
+    assert ffnn["entry"] == f"entries/{HEXA}__converge__iid__ffnn__acc__torch.html"
+    assert [m[0] for m in ffnn["metrics"][:3]] == ["rank", "rmse_Nm", "cl_score"]
+    assert ffnn["metrics"][1][2] == "lower" and ffnn["metrics"][2][2] == "higher"
+    assert (site / "compare.html").is_file()

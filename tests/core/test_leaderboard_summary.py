@@ -27,8 +27,9 @@ def test_models_are_columns_and_splits_are_ordered(tmp_path, make_record):
     rows = [line for line in page.splitlines() if line.startswith("| ")]
     assert rows[0] == "| dataset | split | sdnn | ffnn |"  # the better model first
     assert [r.split(" | ")[1] for r in rows[1:4]] == ["iid", "unseen-rotation", "fraction-0.5"]
-    assert rows[1] == "| hexa-climb-smoke-v7 | iid | 0.11 [0.1, 0.12] | 1.01 [1, 1.02] |"
-    nrmse = "| hexa-climb-smoke-v7 | iid | 0.055 [0.05, 0.06] | 0.505 [0.5, 0.51] |"
+    # fixed decimals to 3 significant digits, the bounds on the mean's decimals
+    assert rows[1] == "| hexa-climb-smoke-v7 | iid | 0.110 [0.100, 0.120] | 1.01 [1.00, 1.02] |"
+    nrmse = "| hexa-climb-smoke-v7 | iid | 0.0550 [0.0500, 0.0600] | 0.505 [0.500, 0.510] |"
     assert rows[5] == nrmse  # the NRMSE table
     assert "Closed loop" not in page  # no closed-loop records, no section
 
@@ -45,7 +46,7 @@ def test_closed_loop_section_shows_the_headline_score_and_time_held(tmp_path, ma
         }
         write_record(record, tmp_path / f"r{s}.json")
     page = headline(aggregate(load_records(tmp_path)))
-    assert "| hexa-climb-smoke-v7 | iid | 0.5 [0.4, 0.6] / 2 |" in page
+    assert "| hexa-climb-smoke-v7 | iid | 0.50 [0.40, 0.60] / 2 |" in page
 
 
 def test_sample_efficiency_curve_ends_with_iid_at_one(tmp_path, make_record):

@@ -25,7 +25,7 @@ def split_order(split: str) -> tuple[int, float, str]:
     return (2, 0.0, split)
 
 
-def _labels(table: pd.DataFrame) -> pd.Series:
+def model_labels(table: pd.DataFrame) -> pd.Series:
     """The model's name, with variant and backend when a model appears with several."""
     combos = table.groupby("model")[["variant", "backend"]].nunique().max(axis=1)
     return table.apply(
@@ -151,7 +151,7 @@ def headline(table: pd.DataFrame) -> str:
         "",
     ]
     for protocol, part in table.groupby("protocol", sort=True):
-        part = part.assign(label=_labels(part))
+        part = part.assign(label=model_labels(part))
         lines += [f"# Trained under the {protocol} protocol", ""]
         lines += error_section(part, "rmse_Nm", "Test torque RMSE (N m), mean [95 % CI] over seeds")
         lines += error_section(

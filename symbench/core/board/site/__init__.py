@@ -1,13 +1,16 @@
 """The leaderboard as a static site (`symbench leaderboard --html DIR`): plain files that
 need no server and no network, opened from disk or put on any static host.
 
-Pages (file names in `names`): `index.html` lists the robots, their datasets and protocol
-sections; a board page per (robot, dataset) holds a sortable, filterable table per protocol
-and split and the plots; an entry page per table row (dataset, protocol, split, model,
-variant, backend) shows each seed's provenance, verification status and the commands that
-reproduce it. The numbers are `leaderboard.aggregate`'s, so the site and the Markdown board
-never disagree. The same records give the same bytes: nothing depends on the time of the
-build or on the order of the files.
+Pages (file names in `names`): `index.html` is the overview, per robot, dataset and
+protocol a model x split table of the headline metrics with the findings in words and the
+board page's plots (`overview`), then what each split and score means; a board page per
+(robot, dataset) holds a sortable, filterable table per protocol and split and the plots;
+an entry page per table row (dataset, protocol, split, model, variant, backend) shows each
+seed's provenance, verification status and the commands that reproduce it; `compare.html`
+shows the rows chosen on the board pages side by side (their ids in its URL, their numbers
+in a script beside it, `compare`). The numbers are `leaderboard.aggregate`'s, so the site
+and the Markdown board never disagree. The same records give the same bytes: nothing
+depends on the time of the build or on the order of the files.
 
 With `clips` (a results folder holding the runs' checkpoints) each board page also shows
 clips of the closed loop, the best and the worst model climbing beside the expert (`clips`).
@@ -26,6 +29,7 @@ import pandas as pd
 from symbench.core.board.leaderboard import aggregate, load_records
 from symbench.core.board.site.clips import ClipPlan, clip_plan, draw_clips
 from symbench.core.board.site.names import MARKER
+from symbench.core.board.site.overview import overviews
 from symbench.core.board.site.pages import board_pages, entry_pages
 from symbench.core.board.site.plots import draw_plots
 from symbench.core.board.site.render import Renderer
@@ -82,15 +86,17 @@ def _build(
     renderer = Renderer(site)
     renderer.static()
     boards = board_pages(table)
+    plots = {}
     for page in boards:
         rows = table[(table.robot == page.robot) & (table.dataset == page.dataset)]
-        plots = draw_plots(rows, page.robot, page.dataset, site)
+        plots[page.path] = draw_plots(rows, page.robot, page.dataset, site)
         page_clips = None if clips is None else clips[page.robot, page.dataset]
         drawn = None if page_clips is None else draw_clips(page_clips, site)
-        renderer.board(page, plots, drawn)
+        renderer.board(page, plots[page.path], drawn)
     entries = entry_pages(boards, records, board)
     for entry in entries:
         renderer.entry(entry)
-    renderer.index(boards, records=len(records), groups=len(entries))
+    renderer.compare(entries)
+    renderer.index(overviews(table, records), plots, boards, records=len(records))
     (site / MARKER).write_text("built by `symbench leaderboard --html`; replaced whole\n")
     return [*renderer.written, MARKER]

@@ -33,8 +33,9 @@ from PIL import Image
 
 from symbench.core.board.leaderboard import COLUMNS, protocol_of
 from symbench.core.board.site import names
+from symbench.core.board.site.columns import CLOSED_LOOP
 from symbench.core.board.site.names import GroupKey
-from symbench.core.board.site.pages import CLOSED_LOOP, group_of, row_key
+from symbench.core.board.site.pages import group_of, row_key
 from symbench.core.common.atomic import write_bytes_atomic
 from symbench.core.common.errors import SymbenchError
 from symbench.core.config.presets import preset

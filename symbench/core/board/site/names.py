@@ -7,7 +7,10 @@ import re
 from typing import NamedTuple
 
 INDEX = "index.html"
-STATIC = ("site.css", "site.js", "entry.css")  # the package's static/, copied to the site's
+COMPARE = "compare.html"  # entries side by side, chosen by the ids in its URL
+ENTRY_DATA = "data/entries.js"  # their numbers, a script: fetch() of a file:// URL is blocked
+# copied from the package's static/ into the site's static/
+STATIC = ("site.css", "site.js", "compare.js", "entry.css")
 MARKER = ".symbench-site"  # marks a folder as a site that a new build may replace whole
 _UNSAFE = re.compile(r"[^A-Za-z0-9._-]+")
 _NOT_IN_ID = re.compile(r"[^A-Za-z0-9_-]+")  # '.' too: an id is also a CSS selector
@@ -42,8 +45,13 @@ def clip_file(robot: str, dataset: str, role: str, model: str) -> str:
     return f"clips/{slug(robot, dataset)}-{slug(role)}-{slug(model)}.webp"
 
 
+def entry_id(key: GroupKey) -> str:
+    """A row's id in compare links: the name of its entry page."""
+    return slug(*key)
+
+
 def entry_page(key: GroupKey) -> str:
-    return f"entries/{slug(*key)}.html"
+    return f"entries/{entry_id(key)}.html"
 
 
 def static_file(name: str) -> str:

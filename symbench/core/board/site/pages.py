@@ -5,38 +5,20 @@ number is worked out once, here and in the leaderboard."""
 from __future__ import annotations
 
 from collections import defaultdict
-from collections.abc import Callable, Iterable
-from dataclasses import dataclass, field
+from collections.abc import Iterable
+from dataclasses import dataclass
 from pathlib import Path
 
-import numpy as np
 import pandas as pd
 
-from symbench.core.board.cells import cell_of
-from symbench.core.board.leaderboard import COLUMNS, MIN_SEEDS, protocol_of
+from symbench.core.board.leaderboard import protocol_of
 from symbench.core.board.site import names
+from symbench.core.board.site.columns import HEADLINE, Cell, Column, board_columns
 from symbench.core.board.site.names import GroupKey
 from symbench.core.board.site.provenance import Provenance, provenance
 from symbench.core.board.site.seeds import SeedSummary, seed_summary
 from symbench.core.board.summary import split_order
 from symbench.core.runs.results import RecordV1
-
-CLOSED_LOOP = "closed-loop"  # its columns come last: they measure control, not the fit
-OVER_SEEDS = "mean [95 % bootstrap interval] over seeds"
-
-
-@dataclass(frozen=True)
-class Cell:
-    text: str
-    value: str  # what sorting compares: the mean at full precision, "" when missing
-
-
-@dataclass(frozen=True)
-class Column:
-    name: str  # the leaderboard's column name (leaderboard.csv has the same)
-    title: str  # what the column holds, shown as the header's tooltip
-    numeric: bool
-    read: Callable[[pd.Series], Cell] = field(compare=False, repr=False)
 
 
 @dataclass(frozen=True)
@@ -47,12 +29,31 @@ class Row:
     entry: str  # the group's entry page
     cells: tuple[Cell, ...]  # one per column of the page
 
+    @property
+    def model(self) -> str:
+        return self.key.model
+
+    @property
+    def label(self) -> str:
+        return self.key.model
+
+    @property
+    def link(self) -> str:
+        return self.entry
+
+    @property
+    def id(self) -> str:
+        """The row's id in a compare link: its entry page's name."""
+        return names.entry_id(self.key)
+
 
 @dataclass(frozen=True)
 class SplitTable:
     split: str
     anchor: str
     rows: tuple[Row, ...]
+    hidden: tuple[str, ...] = ()  # the page's columns folded into the caption
+    folded: str = ""  # what they hold, e.g. 'variant acc, backend torch'
 
 
 @dataclass(frozen=True)
@@ -90,56 +91,6 @@ class EntryPage:
     runs: tuple[Provenance, ...]
 
 
-def mean_ci(name: str) -> Callable[[pd.Series], Cell]:
-    """The mean [95 % interval] over seeds of an aggregated column, as on the Markdown
-    board."""
-
-    def read(row: pd.Series) -> Cell:
-        mean = float(row[f"{name}_mean"])
-        return Cell(cell_of(row, name), "" if np.isnan(mean) else repr(mean))
-
-    return read
-
-
-def _seeds(row: pd.Series) -> Cell:
-    flag = "" if row.seeds >= MIN_SEEDS else f" (<{MIN_SEEDS})"
-    return Cell(f"{row.seeds}{flag}", str(row.seeds))
-
-
-def _parameters(row: pd.Series) -> Cell:
-    return Cell(str(row.parameters), str(row.parameters))
-
-
-def _stopped_by(row: pd.Series) -> Cell:
-    return Cell(row.stopped_by, row.stopped_by)
-
-
-def _has(rows: pd.DataFrame, name: str) -> bool:
-    return f"{name}_mean" in rows and bool(rows[f"{name}_mean"].notna().any())
-
-
-def columns(rows: pd.DataFrame) -> tuple[Column, ...]:
-    """The columns with data among `rows`: the evaluators' metrics (COLUMNS), how each
-    model trained, then the closed loop's metrics."""
-
-    def metrics(closed_loop: bool) -> list[Column]:
-        return [
-            Column(name, f"{evaluator} · {metric}: {OVER_SEEDS}", True, mean_ci(name))
-            for (evaluator, metric), name in COLUMNS.items()
-            if (evaluator == CLOSED_LOOP) == closed_loop and _has(rows, name)
-        ]
-
-    training = [
-        Column("parameters", "trainable parameters", True, _parameters),
-        Column("steps", f"gradient steps trained: {OVER_SEEDS}", True, mean_ci("steps")),
-        Column("epochs", f"passes over the training data: {OVER_SEEDS}", True, mean_ci("epochs")),
-        Column("stopped_by", "why training stopped, with the number of seeds", False, _stopped_by),
-        Column("seeds", f"seeds averaged (flagged below {MIN_SEEDS})", True, _seeds),
-    ]
-    training = [c for c in training if c.name != "steps" or _has(rows, "steps")]
-    return tuple(metrics(False) + training + metrics(True))
-
-
 def group_of(record: RecordV1) -> GroupKey:
     m = record.model
     return GroupKey(
@@ -163,21 +114,41 @@ def _by_split(rows: pd.DataFrame) -> list[tuple[str, pd.DataFrame]]:
     return sorted(rows.groupby("split", sort=True), key=lambda item: split_order(str(item[0])))
 
 
+def fold(columns: tuple[Column, ...], rows: tuple[Row, ...]) -> tuple[tuple[str, ...], str]:
+    """The columns that hold one value over all of a table's rows (two or more), but the
+    rank and the headline metrics, with what they hold: the caption says it once
+    ('variant acc, backend torch') instead of every row; one without data there is left out."""
+    if len(rows) < 2:
+        return (), ""
+    hidden, said = [], []
+    for i, column in enumerate(columns):
+        shown = {row.cells[i].shown for row in rows}
+        if column.name in ("rank", *HEADLINE) or len(shown) > 1:
+            continue
+        hidden.append(column.name)
+        value = shown.pop()
+        said += [] if value == "-" else [f"{column.name} {value}"]  # no data here: left out
+    return tuple(hidden), ", ".join(said)
+
+
+def _split_table(
+    split: str, anchor: str, rows: pd.DataFrame, columns: tuple[Column, ...]
+) -> SplitTable:
+    shown = tuple(_row(r, columns) for _, r in rows.iterrows())
+    return SplitTable(split, anchor, shown, *fold(columns, shown))
+
+
 def board_pages(table: pd.DataFrame) -> list[BoardPage]:
     """A page per (robot, dataset) of the aggregate, rows in rank order."""
     pages = []
     for (robot, did, preset), rows in table.groupby(["robot", "dataset", "preset"], sort=True):
-        page_columns = columns(rows)
+        page_columns = board_columns(rows)
         sections = tuple(
             ProtocolSection(
                 protocol,
                 names.anchor(protocol),
                 tuple(
-                    SplitTable(
-                        split,
-                        names.anchor(protocol, split),
-                        tuple(_row(r, page_columns) for _, r in part.iterrows()),
-                    )
+                    _split_table(split, names.anchor(protocol, split), part, page_columns)
                     for split, part in _by_split(by_protocol)
                 ),
             )
@@ -186,7 +157,13 @@ def board_pages(table: pd.DataFrame) -> list[BoardPage]:
         models = tuple(sorted(rows.model.unique()))
         pages.append(
             BoardPage(
-                robot, did, preset, names.board_page(robot, did), page_columns, sections, models
+                robot,
+                did,
+                preset,
+                names.board_page(robot, did),
+                page_columns,
+                sections,
+                models,
             )
         )
     return pages

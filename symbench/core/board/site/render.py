@@ -9,14 +9,18 @@ from typing import Any
 
 from jinja2 import Environment, PackageLoader, StrictUndefined, select_autoescape
 
-from symbench.core.board.site import names
+from symbench.core.board.cells import count
+from symbench.core.board.site import glossary, names
 from symbench.core.board.site.clips import Clip
+from symbench.core.board.site.columns import BEST, EXPLAINED
+from symbench.core.board.site.compare import entry_data
+from symbench.core.board.site.overview import DatasetOverview
 from symbench.core.board.site.pages import BoardPage, EntryPage
 from symbench.core.board.site.plots import Plot
 
 
 def environment() -> Environment:
-    return Environment(
+    env = Environment(
         loader=PackageLoader("symbench.core.board.site", "templates"),
         autoescape=select_autoescape(["html"]),
         undefined=StrictUndefined,  # a misspelt field fails the build, not the page
@@ -24,6 +28,9 @@ def environment() -> Environment:
         lstrip_blocks=True,
         keep_trailing_newline=True,
     )
+    env.filters["count"] = count  # '3 datasets', '1 seed'
+    env.globals.update(EXPLAINED=EXPLAINED, BEST=BEST)
+    return env
 
 
 class Renderer:
@@ -51,8 +58,33 @@ class Renderer:
         for name in names.STATIC:
             self._write(names.static_file(name), (source / name).read_bytes())
 
-    def index(self, boards: list[BoardPage], records: int, groups: int) -> None:
-        self._page("index.html", names.INDEX, boards=boards, records=records, groups=groups)
+    def index(
+        self,
+        overviews: list[DatasetOverview],
+        plots: dict[str, tuple[Plot, ...]],
+        boards: list[BoardPage],
+        records: int,
+    ) -> None:
+        """The overview first; `plots` by board page, drawn for the board pages."""
+        splits = [t.split for b in boards for s in b.sections for t in s.tables]
+        columns = [c.name for b in boards for c in b.columns]
+        self._page(
+            "index.html",
+            names.INDEX,
+            overviews=overviews,
+            plots=plots,
+            boards={b.path: b for b in boards},
+            models=sorted({m for b in boards for m in b.models}),
+            records=records,
+            groups=sum(len(t.rows) for b in boards for s in b.sections for t in s.tables),
+            splits=glossary.splits(splits),
+            scores=glossary.scores(columns),
+        )
+
+    def compare(self, entries: list[EntryPage]) -> None:
+        """compare.html and the data its script reads."""
+        self._write(names.ENTRY_DATA, entry_data(entries))
+        self._page("compare.html", names.COMPARE)
 
     def board(
         self, page: BoardPage, plots: tuple[Plot, ...], clips: tuple[Clip, ...] | None = None

@@ -71,7 +71,12 @@ NUMERIC = (
         _metric("closed-loop", "pd_tracking_score"),
     ),
     _numeric("steps", "gradient steps trained", lambda r: getattr(r.training, "steps", None)),
-    _numeric("training (s)", "timings_s · training_s", lambda r: r.timings_s.get("training_s")),
+    _numeric(
+        "wall time training (s)",
+        "timings_s · training_s: what this run spent training; a run resumed from its "
+        "checkpoints times only the rest",
+        lambda r: r.timings_s.get("training_s"),
+    ),
 )
 TEXT = (
     Column("stop reason", "why training stopped", False),
