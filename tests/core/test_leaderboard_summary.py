@@ -73,4 +73,4 @@ def test_closed_loop_section_prefers_the_continuous_tracking_score(tmp_path, mak
         write_record(record, tmp_path / f"r{s}.json")
     page = headline(aggregate(load_records(tmp_path)))
     assert "tracking score (floor 0, oracle 1)" in page
-    assert "| hexa-climb-smoke-v7 | iid | 0.4 [0.3, 0.5] / 2 |" in page
+    assert "| hexa-climb-smoke-v7 | iid | 0.40 [0.30, 0.50] / 2 |" in page

@@ -341,7 +341,7 @@ def test_a_board_never_mixes_training_protocols_in_one_table(make_record, tmp_pa
         f"## Dataset {SMOKE}, preset smoke, paper protocol",
     ]
     converge_part, paper_part = page.split("paper protocol")
-    assert "| 30 [30, 30] | budget 3 |" in converge_part and "epoch-cap 3" not in converge_part
+    assert "| 30.0 | budget 3 |" in converge_part and "epoch-cap 3" not in converge_part
     assert "| epoch-cap 3 |" in paper_part and "budget" not in paper_part
     summary = headline(table)
     assert summary.count("# Trained under the") == 2
