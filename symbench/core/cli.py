@@ -190,7 +190,10 @@ def rows_table(title: str, rows: list[dict], console: Console) -> Table:
 
 
 def _shown(value: object) -> str:
-    """A field as a table cell: lists (an entry's tuples) comma-separated."""
+    """A field as a table cell: lists (an entry's tuples) comma-separated, mappings (a model's
+    learning rate per robot) as `key value` pairs."""
+    if isinstance(value, dict):
+        return ", ".join(f"{k} {v}" for k, v in value.items())
     return ", ".join(map(str, value)) if isinstance(value, list) else str(value)
 
 

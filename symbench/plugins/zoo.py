@@ -14,10 +14,16 @@ train bit for bit as before (a TorchScript trace of the same operations) and sta
 
 from __future__ import annotations
 
+import tomllib
 from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
 
-from symbench import Lazy, ModelEntry
+from symbench import BACKENDS, InvalidEntryError, Lazy, ModelEntry
 from symbench.plugins.architectures import FFNN, GNN, SDGNN, SDNN
+
+# model -> backend -> robot -> learning rate, chosen per robot by `symbench tune --robot R`
+TUNED_RATES = Path(__file__).with_name("tuned_rates.toml")
 
 
 @dataclass(frozen=True)
@@ -26,7 +32,9 @@ class Architecture:
     module: str  # file in the backend package holding `build`
     view: str
     equivariant: bool
-    learning_rate: float  # chosen by `symbench tune` (leaderboards/tuning/README.md)
+    # chosen by `symbench tune` on hexa, for every robot not in tuned_rates.toml
+    # (leaderboards/tuning/README.md)
+    learning_rate: float
     description: str
     widths: tuple[str, ...]  # the build keywords `symbench tune` scales together
     # per backend, raised whenever what its network computes changes (ModelEntry.version)
@@ -87,7 +95,26 @@ ARCHITECTURES = (
 )
 
 
+def tuned_rates(path: Path) -> dict[str, dict[str, Any]]:
+    """The per-robot rates of `path` by model and backend; a model or backend it names that
+    does not exist is refused (a misspelt name would otherwise leave its rates unused)."""
+    try:
+        tables = tomllib.loads(path.read_text())
+    except tomllib.TOMLDecodeError as error:
+        raise InvalidEntryError(f"{path.name}: not valid TOML ({error})") from None
+    for model, backends in tables.items():
+        if model not in {a.name for a in ARCHITECTURES}:
+            raise InvalidEntryError(f"{path.name}: no built-in model '{model}'")
+        if not isinstance(backends, dict):
+            raise InvalidEntryError(f"{path.name}: '{model}' is not a table of backends")
+        unknown = sorted(set(backends) - set(BACKENDS))
+        if unknown:
+            raise InvalidEntryError(f"{path.name}: model '{model}' has no backend '{unknown[0]}'")
+    return tables
+
+
 def model_entries(backend: str, package: str, variant: str = "acc") -> list[ModelEntry]:
+    rates = tuned_rates(TUNED_RATES)
     return [
         ModelEntry(
             a.name,
@@ -100,6 +127,7 @@ def model_entries(backend: str, package: str, variant: str = "acc") -> list[Mode
             a.description,
             a.widths,
             a.versions[backend],
+            rates.get(a.name, {}).get(backend, {}),
         )
         for a in ARCHITECTURES
     ]

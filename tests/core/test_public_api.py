@@ -102,6 +102,22 @@ def _model(**change):
         ({"version": 0}, "model 'm': version must be a positive integer, got 0"),
         ({"version": True}, "model 'm': version must be a positive integer, got True"),
         ({"version": "2"}, "model 'm': version must be a positive integer, got '2'"),
+        (
+            {"learning_rates": {"hexa": 1.5}},
+            "model 'm': learning_rates['hexa'] must be a number in (0, 1), got 1.5",
+        ),
+        (
+            {"learning_rates": {"hexa": True}},
+            "model 'm': learning_rates['hexa'] must be a number in (0, 1), got True",
+        ),
+        (
+            {"learning_rates": {"my robot": 1e-3}},
+            "model 'm': learning_rates robot name 'my robot' is not a name",
+        ),
+        (
+            {"learning_rates": [("hexa", 1e-3)]},
+            "model 'm': learning_rates must map robot names to learning rates",
+        ),
     ],
 )
 def test_a_wrong_model_entry_fails_when_made(change, message):

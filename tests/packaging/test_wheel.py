@@ -49,6 +49,7 @@ def test_the_wheel_holds_every_module_and_every_robot_file(installed):
     ]
     missing = [m for m in modules if m not in names]
     assert not missing, f"missing from the wheel (list the package in pyproject.toml): {missing}"
+    assert "symbench/plugins/tuned_rates.toml" in names  # the zoo's per-robot learning rates
 
 
 def test_the_sdist_holds_every_robot_file(installed):

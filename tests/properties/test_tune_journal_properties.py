@@ -20,7 +20,7 @@ from symbench.core.runs import tune as tuning
 from symbench.core.runs.spec import RunSpec
 from symbench.core.training import loop
 
-GRID = ((1e-3,), (1.0,))
+GRID = ((1e-3,), (1.0,))  # one point, not extended past its edges: a grid-only journal
 
 
 class Trained(Exception):
@@ -35,7 +35,7 @@ def searched(tmp_path_factory):
     with fresh_home() as home:
         generate("hexa", "smoke", simulator=fake_simulate, show_progress=False)
         spec = RunSpec("ffnn", "hexa", preset="smoke", evaluators=(), max_steps=2, output=folder)
-        tuning.tune(spec, *GRID, folder, report=lambda _: None)
+        tuning.tune(spec, *GRID, folder, report=lambda _: None, extend_edges=False)
         yield home, spec, tuning.journal_path(folder, spec)
 
 
@@ -50,7 +50,9 @@ def resume(searched, content: bytes, tmp_path_factory) -> None:
     with fresh_home(), mock.patch.dict("os.environ", {"SYMBENCH_HOME": str(folder / "home")}):
         try:
             with mock.patch.object(loop, "train", side_effect=Trained):
-                summary = tuning.tune(spec, *GRID, folder, report=lambda _: None)
+                summary = tuning.tune(
+                    spec, *GRID, folder, report=lambda _: None, extend_edges=False
+                )
         except Trained:
             event("trains again")
             return

@@ -24,7 +24,7 @@ def spec(tmp_path, model="ffnn") -> RunSpec:
 
 def test_every_grid_point_is_trained_and_scored_by_its_validation_loss(smoke_hexa, tmp_path):
     run = spec(tmp_path)
-    summary = tuning.tune(run, RATES, SCALES, tmp_path, report=lambda _: None)
+    summary = tuning.tune(run, RATES, SCALES, tmp_path, report=lambda _: None, extend_edges=False)
     assert summary["complete"] and len(summary["trials"]) == 4
     widths = sorted({(t["width_scale"], t["hyper"]["width"]) for t in summary["trials"]})
     assert widths == [(0.5, 128), (1.0, 256)]  # ffnn's width 256, scaled
@@ -59,13 +59,13 @@ def test_an_interrupted_search_resumes_without_retraining_finished_trials(
 
     monkeypatch.setattr(loop, "train", crashing_train)
     with pytest.raises(KeyboardInterrupt):
-        tuning.tune(run, RATES, SCALES, tmp_path, report=lambda _: None)
+        tuning.tune(run, RATES, SCALES, tmp_path, report=lambda _: None, extend_edges=False)
     partial = json.loads(tuning.summary_path(tmp_path, run).read_text())
     assert len(partial["trials"]) == 2 and not partial["complete"]
     monkeypatch.setattr(
         loop, "train", lambda *a, **k: (trained.append(a[3]), real_train(*a, **k))[1]
     )
-    summary = tuning.tune(run, RATES, SCALES, tmp_path, report=lambda _: None)
+    summary = tuning.tune(run, RATES, SCALES, tmp_path, report=lambda _: None, extend_edges=False)
     assert summary["complete"] and len(summary["trials"]) == 4
     assert len(trained) == 4  # two before the crash, the two left after it
 
@@ -78,8 +78,8 @@ def test_a_larger_grid_in_the_same_folder_trains_only_its_new_points(
     monkeypatch.setattr(
         loop, "train", lambda *a, **k: (trained.append(a[3].learning_rate), real_train(*a, **k))[1]
     )
-    tuning.tune(run, RATES[:1], SCALES, tmp_path, report=lambda _: None)
-    summary = tuning.tune(run, RATES, SCALES, tmp_path, report=lambda _: None)
+    tuning.tune(run, RATES[:1], SCALES, tmp_path, report=lambda _: None, extend_edges=False)
+    summary = tuning.tune(run, RATES, SCALES, tmp_path, report=lambda _: None, extend_edges=False)
     assert summary["complete"] and len(summary["trials"]) == 4
     assert trained == [RATES[0], RATES[0], RATES[1], RATES[1]]  # the first two not again
 
@@ -87,7 +87,9 @@ def test_a_larger_grid_in_the_same_folder_trains_only_its_new_points(
 def test_a_model_without_widths_searches_the_learning_rate_only(smoke_hexa, tmp_path, monkeypatch):
     entry = registry.model("ffnn", "torch")
     monkeypatch.setattr(tuning, "model_entry", lambda _: dataclasses.replace(entry, widths=()))
-    summary = tuning.tune(spec(tmp_path), RATES, SCALES, tmp_path, report=lambda _: None)
+    summary = tuning.tune(
+        spec(tmp_path), RATES, SCALES, tmp_path, report=lambda _: None, extend_edges=False
+    )
     assert [(t["learning_rate"], t["width_scale"], t["hyper"]) for t in summary["trials"]] == [
         (1e-3, 1.0, {}),
         (3e-3, 1.0, {}),

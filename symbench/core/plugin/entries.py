@@ -11,8 +11,8 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Callable, Sequence
-from dataclasses import dataclass, fields
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field, fields
 from pathlib import Path
 from typing import Any
 
@@ -54,6 +54,11 @@ def _check_choice(kind: str, name: str, field: str, value: object, valid: tuple[
         )
 
 
+def _check_rate(name: str, field: str, rate: object) -> None:
+    if isinstance(rate, bool) or not isinstance(rate, (int, float)) or not 0 < rate < 1:
+        raise InvalidEntryError(f"model '{name}': {field} must be a number in (0, 1), got {rate!r}")
+
+
 def _check_callable(kind: str, name: str, field: str, value: object) -> None:
     if not callable(value):
         raise InvalidEntryError(
@@ -71,6 +76,9 @@ class ModelEntry:
     `widths` names the build keywords that set the network's width (integers with
     defaults): `symbench tune` scales them together, and `--parameters` scales them to a
     parameter count; empty, the network's size is not searched or matched.
+    `learning_rates` maps a robot's name to the learning rate `symbench tune --robot` chose
+    for it; a run on that robot (or on its asymmetric variants) trains with it, any other
+    robot with `learning_rate`.
     `version` numbers the network's computation: raise it whenever a change alters what the
     network computes, float summation order included. Records carry it, a run's identity
     and resume checkpoints include it, and `symbench verify` never re-runs a record of
@@ -87,6 +95,8 @@ class ModelEntry:
     description: str = ""
     widths: tuple[str, ...] = ()
     version: int = 1
+    # left out of the hash (a dict has none), so an entry stays usable as a key
+    learning_rates: Mapping[str, float] = field(default_factory=dict, hash=False)
 
     def __post_init__(self) -> None:
         _check_name("model", self.name)
@@ -96,11 +106,16 @@ class ModelEntry:
         if not isinstance(self.equivariant, bool):
             raise InvalidEntryError(f"model '{self.name}': equivariant must be True or False")
         _check_callable("model", self.name, "build", self.build)
-        rate = self.learning_rate
-        if isinstance(rate, bool) or not isinstance(rate, (int, float)) or not 0 < rate < 1:
+        _check_rate(self.name, "learning_rate", self.learning_rate)
+        if not isinstance(self.learning_rates, Mapping):
             raise InvalidEntryError(
-                f"model '{self.name}': learning_rate must be a number in (0, 1), got {rate!r}"
+                f"model '{self.name}': learning_rates must map robot names to learning rates, "
+                f"got {self.learning_rates!r}"
             )
+        for robot, rate in self.learning_rates.items():
+            _check_name(f"model '{self.name}': learning_rates robot", robot)
+            _check_rate(self.name, f"learning_rates[{robot!r}]", rate)
+        object.__setattr__(self, "learning_rates", dict(self.learning_rates))  # a copy of its own
         if isinstance(self.version, bool) or not isinstance(self.version, int) or self.version < 1:
             raise InvalidEntryError(
                 f"model '{self.name}': version must be a positive integer, got {self.version!r}"

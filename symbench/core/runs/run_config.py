@@ -17,7 +17,7 @@ from symbench.core.data.splits import check_split
 from symbench.core.data.views.model_dims import dims_for
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import ModelEntry
-from symbench.core.robot.specs import load_robot, registered_robot
+from symbench.core.robot.specs import load_robot, registered_robot, split_variant
 from symbench.core.runs.spec import RunSpec, model_entry, resolve_robot
 from symbench.core.training.backends import get_backend
 from symbench.core.training.buildable import check_buildable
@@ -69,9 +69,19 @@ def train_config(spec: RunSpec) -> TrainConfig:
         unused=unused,
         seed=spec.seed,
         val_stride=budget.val_stride,
+        learning_rate=robot_rate(model_entry(spec), spec.robot),
         hyper=hyper,
         progress=spec.progress,
     )
+
+
+def robot_rate(entry: ModelEntry, robot: str) -> float | None:
+    """The learning rate tuned for `robot` (an asymmetric variant: its robot's), None when
+    `entry` has none for it. The configuration names a tuned rate, so changing it changes a
+    record's configuration and a resume checkpoint's identity; the model's own rate stays
+    None there (`TrainConfig.rate_for`), as in every run made before per-robot rates."""
+    rates = entry.learning_rates
+    return rates.get(robot, rates.get(split_variant(robot)[0]))
 
 
 def matched_size(spec: RunSpec) -> dict[str, int]:

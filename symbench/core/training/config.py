@@ -37,7 +37,8 @@ class TrainConfig:
     seed: int = 0
     batch_size: int = 64
     val_stride: int = 1  # validation checks use every val_stride-th row of each held-out climb
-    learning_rate: float | None = None  # None: the model entry's learning rate
+    # None: the model entry's learning rate (a run's: its robot's tuned one, `train_config`)
+    learning_rate: float | None = None
     hyper: dict[str, Any] = field(default_factory=dict)  # network sizes, passed to build
     compile: bool | None = None  # None: the backend's faster default (see `bench models`)
     progress: bool = True
