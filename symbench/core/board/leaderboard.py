@@ -1,11 +1,12 @@
 """Aggregate result records into leaderboard tables (Markdown + CSV) and plots.
 
-Records are grouped by dataset, training protocol, split, model, variant and backend (a
-dataset belongs to one robot; a standard dataset id names its robot and preset); metrics are
-averaged over seeds with their standard deviation and 95 % bootstrap interval, and each
-(dataset, protocol, split) table is ranked by mean test torque RMSE, with rank bands that
-join the models a paired test over seeds cannot tell apart (`statistics`). Protocols are
-never mixed in one table: each has its own sections. Every row shows the parameter count,
+Records are grouped by dataset, training protocol, size, split, model, variant and backend
+(a dataset belongs to one robot; a standard dataset id names its robot and preset); metrics
+are averaged over seeds with their standard deviation and 95 % bootstrap interval, and each
+(dataset, protocol, size, split) table is ranked by mean test torque RMSE, with rank bands
+that join the models a paired test over seeds cannot tell apart (`statistics`). Protocols
+and sizes (default, or matched to N parameters: `board.sizes`) are never mixed in one table:
+each has its own sections, and ranks never cross them. Every row shows the parameter count,
 the gradient steps trained and why training stopped (records from before the `converge`
 protocol were trained under the paper's rule; their stop reason follows from whether they
 stopped before the epoch cap). Each robot's page has a section per dataset, so a robot's
@@ -31,6 +32,15 @@ from symbench.core.board.claims import claims_markdown
 from symbench.core.board.plot_files import write_png
 from symbench.core.board.plots import asymmetry_figure, sample_efficiency_figure
 from symbench.core.board.series import asymmetry_series, sample_efficiency_series
+from symbench.core.board.sizes import (
+    by_size,
+    default_size,
+    miss,
+    miss_caption,
+    miss_text,
+    size_of,
+    titled,
+)
 from symbench.core.board.statistics import mean_interval, rank_bands
 from symbench.core.board.summary import headline
 from symbench.core.common.atomic import write_text_atomic
@@ -118,6 +128,7 @@ def _flat(record: RecordV1) -> dict:
         "dataset": record.dataset.id,
         "preset": record.dataset.preset,
         "protocol": protocol_of(record),
+        "size": size_of(record),
         "parameters": record.model.parameters,
         "epochs": float(record.training.epochs),
         "steps": float(steps) if steps is not None else np.nan,
@@ -130,13 +141,14 @@ def _flat(record: RecordV1) -> dict:
 
 
 def aggregate(records: list[tuple[Path, RecordV1]]) -> pd.DataFrame:
-    """Mean, standard deviation and 95 % bootstrap interval over seeds per (dataset, split,
-    model, variant, backend), ranked within each dataset and split with rank bands; the
+    """Mean, standard deviation and 95 % bootstrap interval over seeds per (dataset, protocol,
+    size, split, model, variant, backend), ranked within each (dataset, protocol, size,
+    split) with rank bands; `parameters_miss` is a matched size's relative miss; the
     dataset's robot and preset are columns too, and `per_seed` holds each metric's values
     by seed (for the plots' dots, the bands and the aggregate across robots)."""
     check_consistent(records)
     runs = pd.DataFrame([_flat(r) for _, r in records])
-    run = ["dataset", "protocol", "split", "model", "variant", "backend", "seed"]
+    run = ["dataset", "protocol", "size", "split", "model", "variant", "backend", "seed"]
     duplicate = runs.duplicated(run, keep=False)
     if duplicate.any():
         first = runs[duplicate].iloc[0]
@@ -144,11 +156,14 @@ def aggregate(records: list[tuple[Path, RecordV1]]) -> pd.DataFrame:
         files = " and ".join(str(p) for (p, _), s in zip(records, same) if s)
         raise SymbenchError(
             f"two records for the same run ({first['dataset']} {first['protocol']} "
-            f"{first['split']} {first['model']} {first['variant']} {first['backend']} "
-            f"seed {first['seed']}): {files}; keep one"
+            f"{first['size']} size {first['split']} {first['model']} {first['variant']} "
+            f"{first['backend']} seed {first['seed']}): {files}; keep one"
         )
     # robot and preset follow from the dataset (one content, one preset per id)
-    keys = ["robot", "dataset", "preset", "protocol", "split", "model", "variant", "backend"]
+    keys = [
+        *["robot", "dataset", "preset", "protocol", "size"],
+        *["split", "model", "variant", "backend"],
+    ]
     missing = runs.rmse_Nm.isna()
     if missing.any():
         names = ", ".join(sorted(str(p.name) for (p, _), m in zip(records, missing) if m)[:5])
@@ -180,12 +195,18 @@ def aggregate(records: list[tuple[Path, RecordV1]]) -> pd.DataFrame:
         dtype=object,
     )
     table = table.reset_index()
-    tables = table.groupby(["dataset", "protocol", "split"])
+    table["parameters_miss"] = [
+        miss(int(p), str(s)) for p, s in zip(table.parameters, table["size"])
+    ]
+    tables = table.groupby(["dataset", "protocol", "size", "split"])
     table["rank"] = tables["rmse_Nm_mean"].rank(method="min").astype(int)
     table["rank_band"] = tables["per_seed"].transform(
         lambda part: rank_bands([seeds["rmse_Nm"] for seeds in part])
     )
-    order = ["robot", "dataset", "protocol", "split", "rank", "model", "variant", "backend"]
+    order = [
+        *["robot", "dataset", "protocol", "size", "split"],
+        *["rank", "model", "variant", "backend"],
+    ]
     return table.sort_values(order).reset_index(drop=True)
 
 
@@ -196,8 +217,8 @@ def _counts(reasons: pd.Series) -> str:
 
 
 def markdown(table: pd.DataFrame, robot: str) -> str:
-    """One robot's leaderboard: a section per dataset, in it one per split, rows ranked by
-    RMSE."""
+    """One robot's leaderboard: a section per dataset, protocol and size (default first),
+    in it one per split, rows ranked by RMSE."""
     metrics = [c[: -len("_mean")] for c in table.columns if c.endswith("_mean")]
     lines = [
         f"# {robot}",
@@ -210,8 +231,11 @@ def markdown(table: pd.DataFrame, robot: str) -> str:
     for (did, preset, protocol), data in table[table.robot == robot].groupby(
         ["dataset", "preset", "protocol"], sort=True
     ):
-        lines += [f"## Dataset {did}, preset {preset}, {protocol} protocol", ""]
-        lines += _split_tables(data, metrics)
+        for size, part in by_size(data):
+            lines += [titled(f"## Dataset {did}, preset {preset}, {protocol} protocol", size), ""]
+            caption = miss_caption(part, size)
+            lines += [caption, ""] if caption else []
+            lines += _split_tables(part, metrics)
     return "\n".join(lines)
 
 
@@ -229,11 +253,11 @@ def _split_tables(table: pd.DataFrame, metrics: list[str]) -> list[str]:
         for _, row in part.iterrows():
             cells = [cell_of(row, m) for m in metrics]
             flag = "" if row.seeds >= MIN_SEEDS else f" (<{MIN_SEEDS})"
+            off = miss_text(int(row.parameters), str(row["size"]))
+            count = f"{row.parameters} ({off})" if off else str(row.parameters)
             lines.append(
                 f"| {row.rank_band} | {row.model} | {row.variant} | {row.backend} "
-                f"| {row.seeds}{flag} | {row.parameters} | "
-                + " | ".join(cells)
-                + f" | {row.stopped_by} |"
+                f"| {row.seeds}{flag} | {count} | " + " | ".join(cells) + f" | {row.stopped_by} |"
             )
         lines.append("")
     return lines
@@ -258,17 +282,18 @@ def write_tables(records: list[tuple[Path, RecordV1]], out: Path) -> list[Path]:
     claims = out / "claims.md"
     write_text_atomic(claims, claims_markdown(table))
     written.append(claims)
+    plotted = default_size(table)  # a plot's series would mix sizes
     for robot in sorted(table.robot.unique()):
         md = out / f"{robot}.md"
         write_text_atomic(md, markdown(table, robot))
         written.append(md)
-        curves = sample_efficiency_series(table, robot)
+        curves = sample_efficiency_series(plotted, robot)
         if curves:
             png = out / f"{robot}-sample-efficiency.png"
             write_png(sample_efficiency_figure(curves, f"{robot}: sample efficiency"), png)
             written.append(png)
-    for base in sorted({split_variant(r)[0] for r in table.robot.unique()}):
-        curves, data = asymmetry_series(table, base)
+    for base in sorted({split_variant(r)[0] for r in plotted.robot.unique()}):
+        curves, data = asymmetry_series(plotted, base)
         if curves:
             png = out / f"{base}-asymmetry.png"
             write_png(asymmetry_figure(curves, data, f"{base}: error against asymmetry"), png)

@@ -11,6 +11,7 @@ from __future__ import annotations
 import pandas as pd
 
 from symbench.core.board.cells import cell_of, metric_cell
+from symbench.core.board.sizes import by_size, miss_caption, titled
 from symbench.core.board.statistics import RESAMPLES, Interval, across_tasks
 
 SPLIT_ORDER = ("iid", "unseen-heading", "unseen-rotation", "orbit-rotation")
@@ -139,7 +140,7 @@ def _probability(p: Interval) -> str:
 
 def headline(table: pd.DataFrame) -> str:
     """The Markdown of summary.md from an aggregated table (see `leaderboard.aggregate`):
-    the sections once per training protocol, never mixing them."""
+    the sections once per training protocol and size (default first), never mixing them."""
     seeds = sorted(int(s) for s in table.seeds.unique())
     lines = [
         "# Leaderboard summary",
@@ -150,9 +151,16 @@ def headline(table: pd.DataFrame) -> str:
         "(docs/leaderboard-protocol.md#statistics).",
         "",
     ]
-    for protocol, part in table.groupby("protocol", sort=True):
+    sections = [
+        (protocol, size, part)
+        for protocol, by_protocol in table.groupby("protocol", sort=True)
+        for size, part in by_size(by_protocol)
+    ]
+    for protocol, size, part in sections:
         part = part.assign(label=model_labels(part))
-        lines += [f"# Trained under the {protocol} protocol", ""]
+        lines += [titled(f"# Trained under the {protocol} protocol", size), ""]
+        caption = miss_caption(part, size)
+        lines += [caption, ""] if caption else []
         lines += error_section(part, "rmse_Nm", "Test torque RMSE (N m), mean [95 % CI] over seeds")
         lines += error_section(
             part,

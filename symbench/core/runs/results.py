@@ -10,8 +10,9 @@ an edited record); `symbench verify` re-runs a record to check its numbers.
 A run's identity is its configuration: the data (dataset id and content hash), the preset
 (budgets), split, seed, model, input variant, backend, evaluators and training configuration.
 The key (`run_key`), which names the record file, holds what tells runs apart at a glance
-(dataset id, preset, split, model, variant, backend, seed); `RecordBody.configuration` holds
-all of it, so a sweep can tell a finished run from another run's record at the same path.
+(dataset id, preset, split, model, variant, backend, protocol, a matched size, seed);
+`RecordBody.configuration` holds all of it, so a sweep can tell a finished run from another
+run's record at the same path.
 
 Names that end up in file names (robot, split, model, variant, dataset, preset) must be safe
 identifiers, so no record can make publish or leaderboard write outside their folder.
@@ -52,13 +53,18 @@ def run_key(
     backend: str,
     protocol: str,
     seed: int,
+    parameters: int | None = None,
 ) -> str:
     """What identifies a run by name: one record per key, written as `<key>.json`, e.g.
     `hexa-climb-small-v5__small__iid__sdnn__acc__torch__converge__seed0`. The dataset id names
     the data (a standard id names its robot and grid), the preset the budgets, the protocol
-    how training stops; all are in the key, so runs on other data, budgets or protocols never
-    share a record file or a checkpoint folder."""
-    return f"{dataset}__{preset}__{split}__{model}__{variant}__{backend}__{protocol}__seed{seed}"
+    how training stops, `__p<N>` a size matched to N parameters (`--parameters`; default
+    sizes add nothing, so their keys stay as they were); all are in the key, so runs on other
+    data, budgets, protocols or sizes never share a record file or a checkpoint folder."""
+    size = "" if parameters is None else f"__p{parameters}"
+    return (
+        f"{dataset}__{preset}__{split}__{model}__{variant}__{backend}__{protocol}{size}__seed{seed}"
+    )
 
 
 class _Strict(BaseModel):
@@ -106,6 +112,15 @@ class ModelInfo(ModelInfoV1):
         ge=1,
         description="the model entry's version: what the network computes (records made "
         "before versions were recorded read as version 1)",
+    )
+    matched_parameters: int | None = Field(
+        default=None,
+        ge=1,
+        # left out of the JSON when None: a default-size record is written (and sealed) as
+        # before this field existed
+        exclude_if=lambda value: value is None,
+        description="the parameter count the widths were scaled to (`--parameters`); absent: "
+        "the model's default size",
     )
 
 
@@ -191,7 +206,15 @@ class RecordV1(_Strict):
         """The run's key (`run_key`), safe as a file name: one record per key."""
         m, d = self.model, self.dataset
         return run_key(
-            d.id, d.preset, self.split, m.name, m.variant, m.backend, self.protocol(), self.seed
+            d.id,
+            d.preset,
+            self.split,
+            m.name,
+            m.variant,
+            m.backend,
+            self.protocol(),
+            self.seed,
+            getattr(m, "matched_parameters", None),
         )
 
     def protocol(self) -> Protocol:
@@ -217,7 +240,11 @@ class RecordBody(RecordV1):
         of one configuration differ only in what the run measured and where it ran. Compared
         with `run_config.configuration` of a requested run (same names)."""
         m, config = self.model, self.training.config.model_dump(mode="json")
+        matched = (
+            {} if m.matched_parameters is None else {"matched parameters": m.matched_parameters}
+        )
         return {
+            **matched,
             "dataset": self.dataset.id,
             "dataset content hash": self.dataset.content_hash,
             "preset": self.dataset.preset,

@@ -131,7 +131,9 @@ def configuration(spec: RunSpec, content_hash: str | None = None) -> dict[str, A
     dataset content hash only when given (it is known once the dataset is made)."""
     entry = model_entry(spec)
     config = train_config(spec)
+    matched = {} if spec.parameters is None else {"matched parameters": spec.parameters}
     wanted = {
+        **matched,
         "dataset": spec.dataset_id,
         "dataset content hash": content_hash,
         "preset": spec.preset,

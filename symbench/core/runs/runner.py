@@ -128,6 +128,7 @@ def record_body(
                 "parameters": model.n_params,
                 "plugin": plugin_info(entry),
                 "version": entry.version,
+                "matched_parameters": spec.parameters,
             }
         ),
         robot=spec.robot,

@@ -86,6 +86,7 @@ class RunSpec:
             self.backend,
             self.protocol,
             self.seed,
+            self.parameters,
         )
 
     @property

@@ -1,11 +1,13 @@
 """The leaderboard as a static site (`symbench leaderboard --html DIR`): plain files that
 need no server and no network, opened from disk or put on any static host.
 
-Pages (file names in `names`): `index.html` is the overview, per robot, dataset and
-protocol a model x split table of the headline metrics with the findings in words and the
-board page's plots (`overview`), then what each split and score means; a board page per
-(robot, dataset) holds a sortable, filterable table per protocol and split and the plots;
-an entry page per table row (dataset, protocol, split, model, variant, backend) shows each
+Pages (file names in `names`): `index.html` is the overview, per robot, dataset, protocol
+and size (`board.sizes`: default first, then each matched parameter count) a model x split
+table of the headline metrics with the findings in words and the board page's plots
+(`overview`, of default sizes), then what each split and score means; a board page per
+(robot, dataset) holds a sortable, filterable table per protocol, size and split and the
+plots; an entry page per table row (dataset, protocol, size, split, model, variant, backend)
+shows each
 seed's provenance, verification status and the commands that reproduce it; `compare.html`
 shows the rows chosen on the board pages side by side (their ids in its URL, their numbers
 in a script beside it, `compare`). The numbers are `leaderboard.aggregate`'s, so the site
@@ -33,6 +35,7 @@ from symbench.core.board.site.overview import overviews
 from symbench.core.board.site.pages import board_pages, entry_pages
 from symbench.core.board.site.plots import draw_plots
 from symbench.core.board.site.render import Renderer
+from symbench.core.board.sizes import default_size
 from symbench.core.common.atomic import replace_folder, staging_folder
 from symbench.core.common.errors import SymbenchError
 from symbench.core.common.paths import writable_folder
@@ -54,7 +57,7 @@ def build_site(
     the clips load, board pages show them. Returns the files written, sorted."""
     records = load_records(results) if records is None else records
     table = aggregate(records)
-    planned = None if clips is None else clip_plan(table, records, clips)
+    planned = None if clips is None else clip_plan(default_size(table), records, clips)
     _check_replaceable(out)
     writable_folder(out, "site folder")
     staging = staging_folder(out)
@@ -88,7 +91,8 @@ def _build(
     boards = board_pages(table)
     plots = {}
     for page in boards:
-        rows = table[(table.robot == page.robot) & (table.dataset == page.dataset)]
+        shown = default_size(table)  # a plot's series would mix sizes
+        rows = shown[(shown.robot == page.robot) & (shown.dataset == page.dataset)]
         plots[page.path] = draw_plots(rows, page.robot, page.dataset, site)
         page_clips = None if clips is None else clips[page.robot, page.dataset]
         drawn = None if page_clips is None else draw_clips(page_clips, site)

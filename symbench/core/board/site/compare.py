@@ -8,6 +8,7 @@ import json
 from collections.abc import Iterable
 
 from symbench.core.board.site.pages import EntryPage
+from symbench.core.board.sizes import titled
 
 
 def entry_data(entries: Iterable[EntryPage]) -> bytes:
@@ -15,7 +16,9 @@ def entry_data(entries: Iterable[EntryPage]) -> bytes:
     the board's column order (the headline first), each with its direction of better."""
     data = {
         page.row.id: {
-            "title": f"{page.key.model} ({page.key.variant}, {page.key.backend})",
+            "title": titled(
+                f"{page.key.model} ({page.key.variant}, {page.key.backend})", page.key.size
+            ),
             "robot": page.robot,
             "dataset": page.key.dataset,
             "protocol": page.key.protocol,

@@ -6,6 +6,8 @@ from __future__ import annotations
 import re
 from typing import NamedTuple
 
+from symbench.core.board.sizes import DEFAULT, titled
+
 INDEX = "index.html"
 COMPARE = "compare.html"  # entries side by side, chosen by the ids in its URL
 ENTRY_DATA = "data/entries.js"  # their numbers, a script: fetch() of a file:// URL is blocked
@@ -25,6 +27,19 @@ class GroupKey(NamedTuple):
     model: str
     variant: str
     backend: str
+    size: str = DEFAULT  # `board.sizes`: 'default' or 'matched N'
+
+    @property
+    def section(self) -> str:
+        """Its table's protocol and size in words: 'converge protocol', with ', matched at
+        100 000 parameters' for a matched size."""
+        return titled(f"{self.protocol} protocol", self.size)
+
+    @property
+    def parts(self) -> tuple[str, ...]:
+        """What names it: the default size is left out, so default-size names stay as they
+        were before sizes were kept apart."""
+        return tuple(self) if self.size != DEFAULT else tuple(self)[:-1]
 
 
 def slug(*parts: str) -> str:
@@ -47,7 +62,7 @@ def clip_file(robot: str, dataset: str, role: str, model: str) -> str:
 
 def entry_id(key: GroupKey) -> str:
     """A row's id in compare links: the name of its entry page."""
-    return slug(*key)
+    return slug(*key.parts)
 
 
 def entry_page(key: GroupKey) -> str:

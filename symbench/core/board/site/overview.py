@@ -16,6 +16,7 @@ from symbench.core.board.site import names
 from symbench.core.board.site.columns import BEST, RMSE, SCORES, Cell, Column, has, mean_ci
 from symbench.core.board.site.findings import findings
 from symbench.core.board.site.pages import group_of, row_key
+from symbench.core.board.sizes import DEFAULT, by_size, titled
 from symbench.core.board.summary import model_labels, split_order
 from symbench.core.runs.results import RecordV1
 
@@ -38,7 +39,7 @@ class OverviewRow:
 
 @dataclass(frozen=True)
 class OverviewTable:
-    protocol: str
+    protocol: str  # with its size (`board.sizes`): a table never mixes either
     anchor: str
     caption: str
     columns: tuple[Column, ...]
@@ -52,7 +53,7 @@ class DatasetOverview:
     dataset: str
     preset: str
     board: str  # its board page
-    tables: tuple[OverviewTable, ...]  # one per protocol
+    tables: tuple[OverviewTable, ...]  # one per protocol and size, default sizes first
 
 
 def equivariance(records: Iterable[tuple[Path, RecordV1]]) -> dict[names.GroupKey, bool]:
@@ -71,15 +72,16 @@ def overviews(table: pd.DataFrame, records: list[tuple[Path, RecordV1]]) -> list
             str(preset),
             names.board_page(str(robot), str(did)),
             tuple(
-                _table(str(robot), str(did), str(protocol), part)
-                for protocol, part in rows.groupby("protocol", sort=True)
+                _table(str(robot), str(did), str(protocol), size, part)
+                for protocol, by_protocol in rows.groupby("protocol", sort=True)
+                for size, part in by_size(by_protocol)
             ),
         )
         for (robot, did, preset), rows in table.groupby(["robot", "dataset", "preset"], sort=True)
     ]
 
 
-def _table(robot: str, dataset: str, protocol: str, rows: pd.DataFrame) -> OverviewTable:
+def _table(robot: str, dataset: str, protocol: str, size: str, rows: pd.DataFrame) -> OverviewTable:
     rows = rows.assign(label=model_labels(rows))
     splits = sorted(rows.split.unique(), key=split_order)
     score = next((s for s in SCORES if has(rows, s)), None)
@@ -94,15 +96,15 @@ def _table(robot: str, dataset: str, protocol: str, rows: pd.DataFrame) -> Overv
         OverviewRow(str(part.model.iloc[0]), str(part.label.iloc[0]), _cells(columns, part))
         for _, part in groups
     )
-    caption = (
-        f"{robot}, {dataset}, {protocol} protocol: test torque RMSE in N m per split (lower "
-        f"is better), mean [95 % bootstrap interval] over seeds, {BEST} the best rank band"
+    caption = titled(f"{robot}, {dataset}, {protocol} protocol", size) + (
+        ": test torque RMSE in N m per split (lower is better), mean [95 % bootstrap "
+        f"interval] over seeds, {BEST} the best rank band"
     )
     if score is not None:
         caption += f"; then the closed-loop score {score} (higher is better)"
     return OverviewTable(
         protocol,
-        names.anchor("overview", robot, dataset, protocol),
+        names.anchor("overview", robot, dataset, protocol, *([] if size == DEFAULT else [size])),
         caption,
         columns,
         shown,

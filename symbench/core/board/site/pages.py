@@ -17,6 +17,7 @@ from symbench.core.board.site.columns import HEADLINE, Cell, Column, board_colum
 from symbench.core.board.site.names import GroupKey
 from symbench.core.board.site.provenance import Provenance, provenance
 from symbench.core.board.site.seeds import SeedSummary, seed_summary
+from symbench.core.board.sizes import DEFAULT, by_size, miss_caption, size_of, titled
 from symbench.core.board.summary import split_order
 from symbench.core.runs.results import RecordV1
 
@@ -58,14 +59,22 @@ class SplitTable:
 
 @dataclass(frozen=True)
 class ProtocolSection:
+    """One protocol at one size (`board.sizes`): its tables are ranked apart from others."""
+
     protocol: str
     anchor: str
     tables: tuple[SplitTable, ...]
+    size: str = DEFAULT
+    note: str = ""  # a matched size's target, tolerance and each model's miss
+
+    @property
+    def title(self) -> str:
+        return titled(f"{self.protocol} protocol", self.size)
 
 
 @dataclass(frozen=True)
 class BoardPage:
-    """One dataset of one robot: a table per protocol and split."""
+    """One dataset of one robot: a table per protocol, size and split."""
 
     robot: str
     dataset: str
@@ -94,13 +103,21 @@ class EntryPage:
 def group_of(record: RecordV1) -> GroupKey:
     m = record.model
     return GroupKey(
-        record.dataset.id, protocol_of(record), record.split, m.name, m.variant, m.backend
+        record.dataset.id,
+        protocol_of(record),
+        record.split,
+        m.name,
+        m.variant,
+        m.backend,
+        size_of(record),
     )
 
 
 def row_key(row: pd.Series) -> GroupKey:
     """The group of an aggregate row."""
-    return GroupKey(row.dataset, row.protocol, row.split, row.model, row.variant, row.backend)
+    return GroupKey(
+        row.dataset, row.protocol, row.split, row.model, row.variant, row.backend, row["size"]
+    )
 
 
 def _row(row: pd.Series, page_columns: tuple[Column, ...]) -> Row:
@@ -138,21 +155,27 @@ def _split_table(
     return SplitTable(split, anchor, shown, *fold(columns, shown))
 
 
+def _section(
+    protocol: str, size: str, rows: pd.DataFrame, columns: tuple[Column, ...]
+) -> ProtocolSection:
+    """A protocol's tables at one size; a default size's anchors stay as they were."""
+    where = (protocol,) if size == DEFAULT else (protocol, size)
+    tables = tuple(
+        _split_table(split, names.anchor(*where, split), part, columns)
+        for split, part in _by_split(rows)
+    )
+    return ProtocolSection(protocol, names.anchor(*where), tables, size, miss_caption(rows, size))
+
+
 def board_pages(table: pd.DataFrame) -> list[BoardPage]:
     """A page per (robot, dataset) of the aggregate, rows in rank order."""
     pages = []
     for (robot, did, preset), rows in table.groupby(["robot", "dataset", "preset"], sort=True):
         page_columns = board_columns(rows)
         sections = tuple(
-            ProtocolSection(
-                protocol,
-                names.anchor(protocol),
-                tuple(
-                    _split_table(split, names.anchor(protocol, split), part, page_columns)
-                    for split, part in _by_split(by_protocol)
-                ),
-            )
+            _section(str(protocol), size, part, page_columns)
             for protocol, by_protocol in rows.groupby("protocol", sort=True)
+            for size, part in by_size(by_protocol)
         )
         models = tuple(sorted(rows.model.unique()))
         pages.append(

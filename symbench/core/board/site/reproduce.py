@@ -34,11 +34,14 @@ def run_command(record: RecordV1) -> str:
 
 
 def _sizes(record: RecordV1) -> list[str]:
-    """--size NAME=VALUE for every build keyword the run set (by --size or --parameters):
-    the same network either way."""
+    """--parameters N of a matched size (so the record's key and size are the same), then
+    --size NAME=VALUE for every build keyword the run set (by --size or --parameters): the
+    same network, whatever today's search for N would pick."""
     config = getattr(record.training, "config", None)
     hyper = config.hyper if config is not None else {}
-    return [arg for name in sorted(hyper) for arg in ("--size", f"{name}={hyper[name]}")]
+    matched = getattr(record.model, "matched_parameters", None)
+    size = [] if matched is None else ["--parameters", str(matched)]  # the run's key names it
+    return size + [arg for name in sorted(hyper) for arg in ("--size", f"{name}={hyper[name]}")]
 
 
 def _budget(record: RecordV1) -> list[str]:
