@@ -280,7 +280,8 @@ def test_records_of_two_datasets_coexist_and_the_board_groups_by_dataset(home, t
         f"| {LOGS}",
     ] * 2  # the RMSE and the normalized RMSE tables
     csv = (board / "leaderboard.csv").read_text().splitlines()
-    assert csv[0].startswith("robot,dataset,preset,protocol,split,model,variant,backend,seeds,")
+    header = "robot,dataset,preset,protocol,size,split,model,variant,backend,seeds,"
+    assert csv[0].startswith(header)
     assert [row.split(",")[:3] for row in csv[1:]] == [
         ["hexa", SMOKE, "smoke"],
         ["hexa", LOGS, "small"],
