@@ -1,7 +1,8 @@
 """Sweeps: a grid of runs that skips finished records, so an interrupted sweep resumes.
 
 A run is finished when a record at its path (named by its key: dataset, preset, split, model,
-variant, backend, protocol, the matched parameter count when set, seed) validates, matches its seal and holds the requested configuration:
+variant, backend, protocol, the matched parameter count when set, seed) validates, matches
+its seal and holds the requested configuration:
 the same dataset content, evaluators and training configuration too (`identity.record_state`).
 A record of another configuration there is never counted as finished: the sweep refuses
 before any run starts, naming the first difference, unless the runs say `overwrite`, and then
