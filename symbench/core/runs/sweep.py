@@ -2,8 +2,8 @@
 
 A run is finished when a record at its path (named by its key: dataset, preset, split, model,
 variant, backend, protocol, the matched parameter count when set, seed) validates, matches
-its seal and holds the requested configuration:
-the same dataset content, evaluators and training configuration too (`identity.record_state`).
+its seal and holds the requested configuration: the same dataset content, evaluators and
+training configuration too (`identity.record_state`).
 A record of another configuration there is never counted as finished: the sweep refuses
 before any run starts, naming the first difference, unless the runs say `overwrite`, and then
 they run again and replace those records. A record that cannot be trusted (corrupt, edited,
