@@ -13,8 +13,8 @@ from pathlib import Path
 
 from site_records import HEXA, LEGACY_MODEL, SEEDS, runs_of
 
+from symbench.core.board.cells import count, number
 from symbench.core.board.site.metrics import evaluator_metrics
-from symbench.core.board.site.numbers import count, number
 from symbench.core.board.site.provenance import provenance
 from symbench.core.board.site.seeds import seed_summary
 from symbench.core.runs.results import read_record, write_record
@@ -154,18 +154,20 @@ def test_no_long_json_stands_outside_details(site, results):
     assert json_values('a [1, 2] b {"c": [3]} [not json') == ["[1, 2]", '{"c": [3]}']
 
 
-def test_numbers_are_written_to_three_significant_digits_without_exponents():
-    assert [number(x) for x in (0.0996, 0.09996, 12345.6, 999.7, 2.0, 0.0, 7, 0.000123)] == [
+def test_numbers_are_written_as_the_boards_write_a_mean():
+    n = "\u202f"  # the narrow no-break space that groups thousands
+    assert [number(x) for x in (0.0996, 0.09996, 12345.6, 999.7, 2.0, 0.0, 7, 0.00123)] == [
         "0.0996",
-        "0.100",
-        "12346",
-        "1000",
+        "0.1000",  # the digits of 0.09996's magnitude, as the boards write a mean
+        f"12{n}346",
+        f"1{n}000",
         "2.00",
         "0",
         "7",
-        "0.000123",
+        "0.00123",
     ]
-    # in fixed notation these would be all zeros
+    # below 0.001 fixed notation would be a row of zeros
+    assert number(0.000123) == "1.23 \N{MULTIPLICATION SIGN} 10⁻⁴"
     assert number(1.880926556647434e-15) == "1.88 \N{MULTIPLICATION SIGN} 10⁻¹⁵"
     assert number(-4.5e-7) == "-4.50 \N{MULTIPLICATION SIGN} 10⁻⁷"
     assert (count(1, "seed"), count(3, "seed"), count(2, "entry", "entries")) == (

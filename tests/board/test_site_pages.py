@@ -287,6 +287,7 @@ def test_headers_say_which_direction_is_better(site):
         (9667.0, 9000.0, 10240.0, "9\u202f667 [9\u202f000, 10\u202f240]"),
         (3.067e-07, 3.063e-07, 3.07e-07, "3.07 \u00d7 10⁻⁷ [3.06 \u00d7 10⁻⁷, 3.07 \u00d7 10⁻⁷]"),
         (0.5, np.nan, np.nan, "0.500"),  # one seed: no interval
+        (1.312, 1.3121, 1.3123, "1.31 [1.31, 1.31]"),  # seeds differ: an interval, however narrow
         (np.nan, np.nan, np.nan, "-"),
     ],
 )

@@ -57,7 +57,7 @@ def metric_parts(mean: float, low: float, high: float, digits: int = 3) -> tuple
         return f"{text} {TIMES} 10{str(power).translate(_SUPERSCRIPT)}" if power else text
 
     shown = written(mean)
-    if np.isnan(low) or written(low) == written(high) == shown:
+    if np.isnan(low) or low == high == mean:  # one seed, or every seed gave the mean
         return shown, ""
     return shown, f"[{written(low)}, {written(high)}]"
 
@@ -72,6 +72,14 @@ def cell_of(row: pd.Series, metric: str, digits: int = 3) -> str:
     return metric_cell(
         row[f"{metric}_mean"], row[f"{metric}_ci_low"], row[f"{metric}_ci_high"], digits
     )
+
+
+def number(value: float, digits: int = 3) -> str:
+    """One value as the boards write a mean: integers whole and grouped ('12 346'), floats
+    to `digits` significant digits, a power of ten below 0.001."""
+    if isinstance(value, int):
+        return grouped(value, 0)
+    return metric_parts(value, np.nan, np.nan, digits)[0]
 
 
 def count(number: int, noun: str, plural: str | None = None) -> str:

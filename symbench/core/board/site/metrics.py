@@ -9,7 +9,7 @@ import json
 from dataclasses import dataclass
 from typing import Any
 
-from symbench.core.board.site.numbers import count, number
+from symbench.core.board.cells import count, number
 
 SHORT_LIST = 4  # lists of numbers up to this long are shown whole: gains, fractions, intervals
 

@@ -10,7 +10,7 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
-from symbench.core.board.site.numbers import count, number
+from symbench.core.board.cells import count, metric_parts, number
 from symbench.core.board.site.provenance import NOT_RECORDED, Provenance
 from symbench.core.board.statistics import mean_interval
 from symbench.core.runs.results import RecordV1
@@ -123,5 +123,4 @@ def _mean(values: list[float | int | None]) -> Mean:
     if not present:
         return Mean(MISSING, "")
     low, high = mean_interval(present)
-    mean = number(float(np.mean(present)))
-    return Mean(mean, "" if np.isnan(low) else f"[{number(low)}, {number(high)}]")
+    return Mean(*metric_parts(float(np.mean(present)), low, high))
