@@ -43,6 +43,21 @@ def test_refuses_duplicate_runs(tmp_path, make_record):
         aggregate(load_records(tmp_path))
 
 
+def test_the_learning_rate_is_shown_and_never_averaged_over(tmp_path, make_record):
+    """A robot tuned between two sweeps gives seeds of two rates: two configurations."""
+    records = [make_record(seed=s) for s in range(3)]
+    write_runs(tmp_path / "one", lambda **kw: kw["record"], [dict(record=r) for r in records])
+    table = aggregate(load_records(tmp_path / "one"))
+    assert list(table.learning_rate) == [5e-4]
+    write_leaderboard(tmp_path / "one", tmp_path / "out")
+    assert "| parameters | learning rate |" in (tmp_path / "out" / "hexa.md").read_text()
+    records[2]["model"]["learning_rate"] = 1.5e-3
+    write_runs(tmp_path / "two", lambda **kw: kw["record"], [dict(record=r) for r in records])
+    two_rates = r"learning rates 0.0005, 0.0015 \(r0.json and r2.json\)"
+    with pytest.raises(SymbenchError, match=two_rates):
+        aggregate(load_records(tmp_path / "two"))
+
+
 def test_tables_and_plot_regenerate_identically(tmp_path, make_record):
     runs = [
         dict(model=m, split=f"fraction-{f}", seed=s, rmse=r * (1 + s / 10) / f)

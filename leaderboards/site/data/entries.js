@@ -65,6 +65,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
     "steps",
     "9 500 [9 000, 10 000]",
     ""
@@ -153,6 +158,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "157 970",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
     ""
    ],
    [
@@ -247,6 +257,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "8 333 [6 000, 10 000]",
     ""
@@ -335,6 +350,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
     ""
    ],
    [
@@ -429,6 +449,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -517,6 +542,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "172 306",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
     ""
    ],
    [
@@ -611,6 +641,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "7 500 [5 500, 9 500]",
     ""
@@ -699,6 +734,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
     ""
    ],
    [
@@ -793,6 +833,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -881,6 +926,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
     ""
    ],
    [
@@ -975,6 +1025,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -1063,6 +1118,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "157 970",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
     ""
    ],
    [
@@ -1157,6 +1217,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -1245,6 +1310,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
     ""
    ],
    [
@@ -1339,6 +1409,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -1427,6 +1502,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "172 306",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
     ""
    ],
    [
@@ -1521,6 +1601,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "9 667 [9 500, 10 000]",
     ""
@@ -1609,6 +1694,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
     ""
    ],
    [
@@ -1703,6 +1793,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -1791,6 +1886,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
     ""
    ],
    [
@@ -1885,6 +1985,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -1973,6 +2078,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "157 970",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
     ""
    ],
    [
@@ -2067,6 +2177,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -2155,6 +2270,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
     ""
    ],
    [
@@ -2249,6 +2369,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
     "steps",
     "9 667 [9 000, 10 000]",
     ""
@@ -2337,6 +2462,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "172 306",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
     ""
    ],
    [
@@ -2431,6 +2561,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "9 500 [8 500, 10 000]",
     ""
@@ -2519,6 +2654,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
     ""
    ],
    [
@@ -2613,6 +2753,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -2701,6 +2846,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
     ""
    ],
    [
@@ -2795,6 +2945,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -2883,6 +3038,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "157 970",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
     ""
    ],
    [
@@ -2977,6 +3137,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -3065,6 +3230,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
     ""
    ],
    [
@@ -3159,6 +3329,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -3247,6 +3422,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "172 306",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
     ""
    ],
    [
@@ -3341,6 +3521,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -3429,6 +3614,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
     ""
    ],
    [
@@ -3523,6 +3713,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -3611,6 +3806,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
     ""
    ],
    [
@@ -3705,6 +3905,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "8 667 [8 500, 9 000]",
     ""
@@ -3793,6 +3998,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
     ""
    ],
    [
@@ -3887,6 +4097,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -3975,6 +4190,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
     ""
    ],
    [
@@ -4069,6 +4289,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -4157,6 +4382,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
     ""
    ],
    [
@@ -4251,6 +4481,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
     "steps",
     "9 167 [7 500, 10 000]",
     ""
@@ -4339,6 +4574,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "150 796",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
     ""
    ],
    [
@@ -4433,6 +4673,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "7 000 [5 500, 10 000]",
     ""
@@ -4521,6 +4766,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
     ""
    ],
    [
@@ -4615,6 +4865,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -4703,6 +4958,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "158 988",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
     ""
    ],
    [
@@ -4797,6 +5057,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "7 833 [3 500, 10 000]",
     ""
@@ -4885,6 +5150,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
     ""
    ],
    [
@@ -4979,6 +5249,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -5067,6 +5342,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
     ""
    ],
    [
@@ -5161,6 +5441,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -5249,6 +5534,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "150 796",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
     ""
    ],
    [
@@ -5343,6 +5633,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -5431,6 +5726,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
     ""
    ],
    [
@@ -5525,6 +5825,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -5613,6 +5918,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "158 988",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
     ""
    ],
    [
@@ -5707,6 +6017,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -5795,6 +6110,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
     ""
    ],
    [
@@ -5889,6 +6209,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -5977,6 +6302,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
     ""
    ],
    [
@@ -6071,6 +6401,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -6159,6 +6494,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "150 796",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
     ""
    ],
    [
@@ -6253,6 +6593,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -6341,6 +6686,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
     ""
    ],
    [
@@ -6435,6 +6785,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -6523,6 +6878,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "158 988",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
     ""
    ],
    [
@@ -6617,6 +6977,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -6705,6 +7070,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
     ""
    ],
    [
@@ -6799,6 +7169,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -6887,6 +7262,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
     ""
    ],
    [
@@ -6981,6 +7361,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -7069,6 +7454,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "150 796",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
     ""
    ],
    [
@@ -7163,6 +7553,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -7251,6 +7646,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
     ""
    ],
    [
@@ -7345,6 +7745,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -7433,6 +7838,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "158 988",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
     ""
    ],
    [
@@ -7527,6 +7937,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "7 333 [6 500, 8 000]",
     ""
@@ -7615,6 +8030,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
     ""
    ],
    [
@@ -7709,6 +8129,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -7797,6 +8222,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
     ""
    ],
    [
@@ -7891,6 +8321,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
     "steps",
     "9 333 [8 500, 10 000]",
     ""
@@ -7979,6 +8414,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "168 731",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
     ""
    ],
    [
@@ -8073,6 +8513,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "8 500 [5 500, 10 000]",
     ""
@@ -8161,6 +8606,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
     ""
    ],
    [
@@ -8255,6 +8705,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -8343,6 +8798,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "192 283",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
     ""
    ],
    [
@@ -8437,6 +8897,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "6 000 [4 500, 7 000]",
     ""
@@ -8525,6 +8990,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
     ""
    ],
    [
@@ -8619,6 +9089,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -8707,6 +9182,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
     ""
    ],
    [
@@ -8801,6 +9281,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -8889,6 +9374,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "168 731",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
     ""
    ],
    [
@@ -8983,6 +9473,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -9071,6 +9566,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
     ""
    ],
    [
@@ -9165,6 +9665,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -9253,6 +9758,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "192 283",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
     ""
    ],
    [
@@ -9347,6 +9857,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -9435,6 +9950,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
     ""
    ],
    [
@@ -9529,6 +10049,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -9617,6 +10142,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
     ""
    ],
    [
@@ -9711,6 +10241,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -9799,6 +10334,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "168 731",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
     ""
    ],
    [
@@ -9893,6 +10433,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "9 000 [7 000, 10 000]",
     ""
@@ -9981,6 +10526,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
     ""
    ],
    [
@@ -10075,6 +10625,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -10163,6 +10718,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "192 283",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
     ""
    ],
    [
@@ -10257,6 +10817,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "9 500 [9 000, 10 000]",
     ""
@@ -10345,6 +10910,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
     ""
    ],
    [
@@ -10439,6 +11009,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -10527,6 +11102,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
     ""
    ],
    [
@@ -10621,6 +11201,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -10709,6 +11294,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "168 731",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
     ""
    ],
    [
@@ -10803,6 +11393,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "9 000 [8 000, 9 500]",
     ""
@@ -10891,6 +11486,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
     ""
    ],
    [
@@ -10985,6 +11585,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
     "steps",
     "8 833 [6 500, 10 000]",
     ""
@@ -11073,6 +11678,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "192 283",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
     ""
    ],
    [
@@ -11167,6 +11777,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "6 333 [4 000, 10 000]",
     ""
@@ -11255,6 +11870,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
     ""
    ],
    [
@@ -11349,6 +11969,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
     "steps",
     "9 833 [9 500, 10 000]",
     ""
@@ -11437,6 +12062,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
     ""
    ],
    [
@@ -11531,6 +12161,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "10 000",
     ""
@@ -11619,6 +12254,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
     ""
    ],
    [
@@ -11713,6 +12353,11 @@ window.SYMBENCH_ENTRIES = {
     ""
    ],
    [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
     "steps",
     "8 000 [4 000, 10 000]",
     ""
@@ -11801,6 +12446,11 @@ window.SYMBENCH_ENTRIES = {
    [
     "parameters",
     "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
     ""
    ],
    [

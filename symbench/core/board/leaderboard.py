@@ -26,6 +26,7 @@ from pathlib import Path
 
 import numpy as np
 import pandas as pd
+from pandas.api.typing import DataFrameGroupBy
 
 from symbench.core.board.cells import cell_of
 from symbench.core.board.claims import claims_markdown
@@ -130,6 +131,7 @@ def _flat(record: RecordV1) -> dict:
         "protocol": protocol_of(record),
         "size": size_of(record),
         "parameters": record.model.parameters,
+        "learning_rate": record.model.learning_rate,
         "epochs": float(record.training.epochs),
         "steps": float(steps) if steps is not None else np.nan,
         "stopped_by": _stopped_by(record),
@@ -175,9 +177,11 @@ def aggregate(records: list[tuple[Path, RecordV1]]) -> pd.DataFrame:
     metrics = [c for c in COLUMNS.values() if runs[c].notna().any()] + ["epochs"]
     metrics += ["steps"] if runs.steps.notna().any() else []
     grouped = runs.groupby(keys, sort=True)
+    _check_one_rate(grouped, records)
     table = grouped.agg(
         seeds=("seed", "nunique"),
         parameters=("parameters", "first"),
+        learning_rate=("learning_rate", "first"),
         stopped_by=("stopped_by", _counts),
     )
     for m in metrics:
@@ -208,6 +212,20 @@ def aggregate(records: list[tuple[Path, RecordV1]]) -> pd.DataFrame:
         *["rank", "model", "variant", "backend"],
     ]
     return table.sort_values(order).reset_index(drop=True)
+
+
+def _check_one_rate(grouped: DataFrameGroupBy, records: list[tuple[Path, RecordV1]]) -> None:
+    """One learning rate per entry: seeds trained at different rates (a robot tuned between
+    two sweeps) are two configurations, not one mean."""
+    for key, part in grouped:
+        rates = sorted(set(part.learning_rate))
+        if len(rates) > 1:
+            names = [records[part.index[part.learning_rate == r][0]][0].name for r in rates]
+            raise SymbenchError(
+                f"the seeds of {' '.join(str(k) for k in key)} were trained at learning "
+                f"rates {', '.join(f'{r:g}' for r in rates)} ({' and '.join(names)}): "
+                "keep the records of one rate"
+            )
 
 
 def _counts(reasons: pd.Series) -> str:
@@ -245,10 +263,10 @@ def _split_tables(table: pd.DataFrame, metrics: list[str]) -> list[str]:
         lines += [
             f"### {split}",
             "",
-            "| rank | model | variant | backend | seeds | parameters | "
+            "| rank | model | variant | backend | seeds | parameters | learning rate | "
             + " | ".join(metrics)
             + " | stopped by |",
-            "|---|---|---|---|---|---|" + "---|" * len(metrics) + "---|",
+            "|---|---|---|---|---|---|---|" + "---|" * len(metrics) + "---|",
         ]
         for _, row in part.iterrows():
             cells = [cell_of(row, m) for m in metrics]
@@ -257,7 +275,9 @@ def _split_tables(table: pd.DataFrame, metrics: list[str]) -> list[str]:
             count = f"{row.parameters} ({off})" if off else str(row.parameters)
             lines.append(
                 f"| {row.rank_band} | {row.model} | {row.variant} | {row.backend} "
-                f"| {row.seeds}{flag} | {count} | " + " | ".join(cells) + f" | {row.stopped_by} |"
+                f"| {row.seeds}{flag} | {count} | {row.learning_rate:g} | "
+                + " | ".join(cells)
+                + f" | {row.stopped_by} |"
             )
         lines.append("")
     return lines

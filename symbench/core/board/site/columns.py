@@ -52,6 +52,8 @@ EXPLAINED = {
     "data_tau_asym": "The dataset's own torque asymmetry under its symmetry group: the same "
     "for every model.",
     "parameters": "Trainable parameters.",
+    "learning_rate": "The learning rate trained with (per robot where tuned on its own "
+    "validation data: leaderboards/tuning).",
     "steps": "Gradient steps trained.",
     "epochs": "Passes over the training data.",
     "stopped_by": "Why training stopped, with the number of seeds.",
@@ -109,6 +111,10 @@ def _parameters(row: pd.Series) -> Cell:
     return Cell(grouped(row.parameters, 0), str(row.parameters))
 
 
+def _learning_rate(row: pd.Series) -> Cell:
+    return Cell(f"{row.learning_rate:g}", repr(float(row.learning_rate)))
+
+
 def _text(name: str) -> Callable[[pd.Series], Cell]:
     def read(row: pd.Series) -> Cell:
         return Cell(str(row[name]), str(row[name]))
@@ -145,6 +151,7 @@ def board_columns(rows: pd.DataFrame) -> tuple[Column, ...]:
     ]
     training = [
         Column("parameters", EXPLAINED["parameters"], True, _parameters),
+        Column("learning_rate", EXPLAINED["learning_rate"], True, _learning_rate),
         *([metric("steps")] if has(rows, "steps") else []),
         metric("epochs"),
         Column("stopped_by", EXPLAINED["stopped_by"], False, _text("stopped_by")),
