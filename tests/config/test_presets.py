@@ -253,7 +253,8 @@ def test_presets_table_has_a_row_per_number(monkeypatch):
     result = invoke("presets")
     assert result.exit_code == 0, result.output
     lines = result.stdout.splitlines()
-    assert all(name in lines[2] for name in PRESETS)  # the header
+    (header,) = [line for line in lines if line.startswith("┃ section")]
+    assert all(name in header for name in PRESETS)
     doc = {name: json.loads(json.dumps(dataclasses.asdict(p))) for name, p in PRESETS.items()}
     for section in SECTIONS:
         values = [p[section] for p in doc.values()]
@@ -267,7 +268,7 @@ def test_presets_table_has_a_row_per_number(monkeypatch):
             row = re.compile(r"│\s*" + r"\s*│\s*".join(map(re.escape, [setting, *cells])) + r"\s*│")
             assert any(row.search(line) for line in lines), (section, setting, cells)
     assert "45, 135" in result.stdout and "default, reversed" in result.stdout
-    assert "small-noisy" in lines[2]
+    assert "small-noisy" in header
 
 
 def test_a_wrong_presets_command_line_is_one_line():
@@ -442,7 +443,9 @@ def test_the_fraction_splits_are_the_presets_fractions(monkeypatch):
 
 def test_presets_read_at_80_columns(monkeypatch):
     """Before: seven presets squeezed side by side into 80 columns, every value wrapped into
-    a column of one word ("transfe" over "r", "one-sec" over "ond")."""
+    a column of one word ("transfe" over "r", "one-sec" over "ond"); then, three presets per
+    table, their descriptions still wrapped in a column a dozen characters wide, breaking
+    words ("unseen-incli" over "nation")."""
     monkeypatch.setenv("COLUMNS", "80")
     result = invoke("presets")
     assert result.exit_code == 0, result.output
@@ -450,6 +453,16 @@ def test_presets_read_at_80_columns(monkeypatch):
     assert max(map(len, lines)) <= 80
     headers = [line.split("┃") for line in lines if line.startswith("┃ section")]
     assert [h.strip() for cells in headers for h in cells[3:-1]] == list(PRESETS)
-    assert any("│ 45, 135" in line for line in lines) and any(
-        "│ description" in line for line in lines
-    )
+    words = " ".join(result.stdout.split())
+    for name, p in PRESETS.items():  # each description whole, after its name
+        assert f"{name} {p.description}" in words
+    doc = {name: json.loads(json.dumps(dataclasses.asdict(p))) for name, p in PRESETS.items()}
+    cells = {s.replace("_", " ") for s in SECTIONS}
+    for p in doc.values():
+        for section in SECTIONS:
+            found = p[section].items() if isinstance(p[section], dict) else [("", p[section])]
+            cells |= {setting for setting, _ in found} | {_cell(v) for _, v in found}
+    known = {word for cell in cells for word in cell.split()}
+    body = [line for line in lines if line.startswith("│")]
+    shown = {word for line in body for cell in line.split("│") for word in cell.split()}
+    assert shown <= known, shown - known  # no word of a table broken across lines

@@ -150,6 +150,30 @@ def test_robot_example_finds_its_folder_inside_its_package(plugins):
     assert entry.spec_dir == package / "tripod"
 
 
+def robot_registrations() -> dict[str, str]:
+    """Every documented robot hook (a Python block registering a `RobotEntry` in the docs) and
+    the example robot plugin's, by where it is."""
+    found = {
+        f"{document.name} block {i}": code
+        for document in DOCUMENTS
+        for i, code in enumerate(PYTHON_BLOCK.findall(document.read_text()))
+        if "RobotEntry(" in code
+    }
+    penta = ROOT / "examples" / "symbench-penta" / "symbench_penta" / "__init__.py"
+    return {**found, "symbench-penta": penta.read_text()}
+
+
+def test_every_robot_example_finds_its_folder_with_importlib_resources():
+    """Not `Path(__file__).parent`: a folder beside the module is the editable install's
+    layout, and the docs say to use importlib.resources so that wheels work (issue 42,
+    item 10: the hook example and 'Adding a robot' said different things)."""
+    examples = robot_registrations()
+    assert len(examples) >= 3  # the hook's example, 'Adding a robot', the penta plugin
+    for where, code in examples.items():
+        assert "__file__" not in code, where
+        assert "from importlib.resources import files" in code, where
+
+
 def test_evaluator_example_computes_its_metric(plugins):
     (entry,) = registry.collect("evaluators", host_with(plugins["symbench_evaluators"])).values()
     context = types.SimpleNamespace(predictions=lambda: np.array([[[1.0, -3.0, 2.0]]]))

@@ -65,11 +65,16 @@ def test_sim_check_verifies_the_climb_and_the_d5_symmetry(penta):
     symmetry = report["symmetry"]
     generators = [(g["generator"], g["declared"]) for g in symmetry["generators"]]
     assert symmetry["symmetric"] and generators == [("shift 1", True), ("mirror 0", False)]
+    assert symmetry["groups"] == "C5 declared, D5 from geometry"  # the group it verified
     assert all(g["error"] < 1e-9 for g in symmetry["generators"])
 
 
 def test_a_smoke_dataset_and_a_smoke_run(penta):
-    penta.symbench("data", "generate", "--robot", "penta", "--preset", "smoke", timeout=600)
+    generated = penta.symbench(
+        "data", "generate", "--robot", "penta", "--preset", "smoke", "--no-progress", timeout=600
+    )
+    printed = " ".join(generated.stdout.split())  # no reference hash: expected, and said so
+    assert "no reference hash for this id: expected for a plugin robot's dataset" in printed
     out = penta.tmp / "results"
     penta.symbench(
         "run",
@@ -88,3 +93,8 @@ def test_a_smoke_dataset_and_a_smoke_run(penta):
     (record,) = out.glob("penta-*.json")
     data = json.loads(record.read_text())
     assert "penta" in json.dumps(data)
+    assert data["robot_plugin"] == {
+        "plugin": "penta",
+        "distribution": "symbench-penta",
+        "version": "0.1.0",
+    }

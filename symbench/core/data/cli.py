@@ -67,12 +67,13 @@ def generate_command(robot: str, preset_name: str, workers: int, progress: bool)
 
 def _print_reference(dataset_id: str, content_hash: str) -> None:
     """Whether this machine made the same bytes as the reference committed with symbench."""
-    from symbench.core.data.generation.reference_hashes import reference_hash
+    from symbench.core.data.generation.reference_hashes import no_reference, reference_hash
     from symbench.core.data.storage.metadata import library_versions
 
-    expected = reference_hash(dataset_id, library_versions())
+    versions = library_versions()
+    expected = reference_hash(dataset_id, versions)
     if expected is None:
-        console.print("  no reference hash for this id and these library versions")
+        console.print(f"  {no_reference(dataset_id, versions)}", soft_wrap=True, markup=False)
     elif expected == content_hash:
         console.print("  matches the reference hash committed with symbench")
     else:

@@ -111,3 +111,21 @@ CONTENT_HASHES = {
 def reference_hash(dataset_id: str, versions: dict[str, str]) -> str | None:
     """The committed hash of `dataset_id` made with `versions`, or None when there is none."""
     return CONTENT_HASHES.get(dataset_id) if versions == LIBRARY_VERSIONS else None
+
+
+def no_reference(dataset_id: str, versions: dict[str, str]) -> str:
+    """Why `reference_hash` found none, in one line: a plugin robot's (or another non-standard)
+    dataset has none by design, a standard one with other library versions none for them."""
+    if dataset_id not in CONTENT_HASHES:
+        return (
+            "no reference hash for this id: expected for a plugin robot's dataset and any other "
+            "that is not a built-in robot's standard dataset (only those have references "
+            "committed with symbench); its content hash above identifies it"
+        )
+    names = sorted(set(versions) | set(LIBRARY_VERSIONS))
+    differ = [
+        f"{n} {versions.get(n, 'absent')} (reference {LIBRARY_VERSIONS.get(n, 'absent')})"
+        for n in names
+        if versions.get(n) != LIBRARY_VERSIONS.get(n)
+    ]
+    return f"no reference hash for these library versions: {', '.join(differ)}"
