@@ -75,7 +75,10 @@ from .core.data.symmetry.report import (
     NoImagePairsError as NoImagePairsError,
     dataset_symmetry as dataset_symmetry,
 )
-from .core.data.twins import twin_symmetry as twin_symmetry
+from .core.data.twins import (
+    symmetry_report as symmetry_report,
+    twin_symmetry as twin_symmetry,
+)
 
 # Writing splits
 from .core.data.splits import (

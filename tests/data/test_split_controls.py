@@ -175,7 +175,7 @@ def test_the_test_subset_is_seeded():
 
 
 def test_orbit_rotation_refuses_climbs_without_exact_images():
-    exact = "orbit-rotation needs climbs that are exact rotated.*data symmetry .* --twins N"
+    exact = "orbit-rotation needs climbs that are exact rotated.*`symbench data symmetry hexa"
     with pytest.raises(SymbenchError, match=exact):
         resolve("orbit-rotation", drawn_context("hexa"))
 

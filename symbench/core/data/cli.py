@@ -11,6 +11,7 @@ from rich.table import Table
 from symbench.core.common.cli_types import SEED, WORKERS, CommaList, WritableFolder
 from symbench.core.common.console import StdoutConsole
 from symbench.core.config.presets import LEGACY_PRESETS, PRESETS
+from symbench.core.data.twins import DEFAULT_TWINS
 
 console = StdoutConsole()
 
@@ -294,29 +295,27 @@ def export_command(dataset_id: str, folder: Path, fmt: str) -> None:
     "--twins",
     type=click.IntRange(min=1),
     default=None,
-    help="Construct N image pairs instead of finding them: N climbs of a generated dataset "
-    "simulated again, turned by one symmetry step (cached as dataset ID-twinsN).",
+    help="Construct image pairs from N climbs of a generated dataset, even when it holds "
+    "some: each simulated again under every rotation of the group (cached as dataset "
+    f"ID-twinsN). Without it, a generated dataset holding none gets {DEFAULT_TWINS}.",
 )
 @click.option("--json", "as_json", is_flag=True, help="Print JSON (every pair and column).")
 def symmetry_command(
     dataset_id: str, output: Path | None, twins: int | None, as_json: bool
 ) -> None:
     """How symmetric a dataset is: trajectories that are images of each other under the
-    robot's group, compared after relabelling, against a noise floor."""
+    robot's group, compared after relabelling, against a noise floor (pairs constructed on
+    purpose, saying so, when a generated dataset holds none)."""
     from rich.markup import escape
 
     from symbench.core.data.dataset import load_dataset
     from symbench.core.data.storage.metadata import dataset_dir
     from symbench.core.data.symmetry.pairing import READING_NAMES
     from symbench.core.data.symmetry.plot import PLOT_NAME, symmetry_png
-    from symbench.core.data.symmetry.report import dataset_symmetry
-    from symbench.core.data.twins import twin_symmetry
+    from symbench.core.data.twins import symmetry_report
 
     dataset = load_dataset(dataset_id)
-    if twins is None:
-        report = dataset_symmetry(dataset)
-    else:
-        report = twin_symmetry(dataset, twins, show_progress=not as_json)
+    report = symmetry_report(dataset, twins, show_progress=not as_json)
     name = report.dataset  # the derived dataset of constructed pairs, if any
     plot = output / f"symmetry-{name}.png" if output else dataset_dir(name) / PLOT_NAME
     report.plot = str(symmetry_png(report, plot))

@@ -136,7 +136,7 @@ def orbit_rotation(context: SplitContext) -> np.ndarray:
                 f"rotated images of climbs in [0, {width:g}) degrees (a yaw grid, datasets "
                 "up to v6); this one has none (continuous draws): use unseen-rotation to "
                 "test generalization to other rotations, and `symbench data symmetry "
-                f"{context.dataset_id} --twins N` to measure the data's symmetry on pairs "
+                f"{context.dataset_id}` to measure the data's symmetry on pairs "
                 "constructed on purpose"
             )
         labels[~inside & ~images] = "unused"

@@ -172,7 +172,7 @@ def generate(
     """Generate (or resume) the dataset of `preset_name` for `robot` in the cache.
 
     `scenarios` and `id_override` replace the preset's grid and id (tests use tiny grids;
-    `symbench data symmetry --twins` its constructed pairs, which name their own
+    `symbench data symmetry` its constructed pairs, which name their own
     `repair_command`).
     The real simulator runs in spawned worker processes with pinned numerics (see
     symbench.core.data.generation.determinism), even for workers=1 unless this process is pinned: a

@@ -54,8 +54,9 @@ def symmetry_png(report: SymmetryReport, path: Path) -> Path:
     ax.set(
         yscale="log",
         ylabel="relative RMS error after relabelling",
-        title=f"{report.dataset}: {len(report.pairs)} image pairs under {report.group} "
-        f"(floor: {report.floor_source})",
+        title=f"{report.dataset}: {len(report.pairs)} image pairs under {report.group}"
+        + (" (found" if report.constructed is None else " (constructed on purpose")
+        + f"; floor: {report.floor_source})",
     )
     ax.title.set_fontsize(8)
     ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.0, 1.0))

@@ -58,9 +58,10 @@ within its noise; anything above is a measurable asymmetry, reported as the rati
 error / floor.
 
 **Constructed pairs.** A dataset of climbs drawn from continuous distributions (v7) holds
-no image pairs. With `--twins N` the pairs are made on purpose instead
-(`symbench.core.data.twins`): N of a generated dataset's climbs simulated again beside twins
-turned by one symmetry step, and the report says so (`constructed`).
+no image pairs. For a generated one they are then made on purpose
+(`symbench.core.data.twins.symmetry_report`; with `--twins N` also when it holds some): N of
+its climbs simulated again beside their images under every rotation of the group, and the
+report says so (`constructed`).
 
 The pieces: `pairing.py` finds the image and repeat pairs, `symbench.core.data.twins`
 constructs them, `measure.py` compares them against the floor, `plot.py` draws the figure;
@@ -95,15 +96,21 @@ class Twins:
 
     source: str  # the dataset whose climbs were simulated again
     dataset: str  # the derived dataset of originals and twins
-    climbs: int
-    step_deg: float
+    climbs: int  # climbs of the source simulated again, each with its twins
+    of: int  # the source's climbs, among which they were evenly spaced
+    step_deg: float  # the group's symmetry step: twin k's yaw is k steps further
+    rotations: int  # twins per climb: one per rotation of the group but the identity
     reproduced: bool  # every original simulated again has the source's bytes
+    found_none: bool = False  # the source holds no image pair (else they were asked for)
 
     def sentence(self) -> str:
         return (
-            f"image pairs constructed, not found: {self.climbs} climbs of {self.source} "
-            f"simulated again turned by one symmetry step ({self.step_deg:g} degrees of yaw), "
-            f"kept as {self.dataset}; the originals simulated again "
+            "image pairs constructed on purpose, not found"
+            + (" (the dataset itself holds none)" if self.found_none else "")
+            + f": {self.climbs} of the {self.of} climbs of {self.source}, evenly spaced, "
+            f"simulated again beside their images under each of the group's {self.rotations} "
+            f"rotations (the yaw turned by multiples of {self.step_deg:g} degrees), kept as "
+            f"{self.dataset}; the originals simulated again "
             + ("match" if self.reproduced else "differ from")
             + " the source's files"
         )
@@ -113,8 +120,11 @@ class Twins:
             "source": self.source,
             "dataset": self.dataset,
             "climbs": self.climbs,
+            "of": self.of,
             "step_deg": self.step_deg,
+            "rotations": self.rotations,
             "originals_reproduced": self.reproduced,
+            "source_holds_none": self.found_none,
             "note": self.sentence(),
         }
 
@@ -201,10 +211,11 @@ def verdict(relative_error: float, relative_floor: float, uninformative: str | N
 
 
 def dataset_symmetry(dataset: Any) -> SymmetryReport:
-    """The symmetry report of `dataset`, a loaded `Dataset` (its robot's group and leg
-    frames): what `symbench data symmetry` prints. A generated dataset's scenarios are read
-    as the simulator's input, an imported one's as recorded (see `pair_up`). Without image
-    pairs: a `NoImagePairsError`, which for a generated dataset names `--twins`."""
+    """The symmetry report of the image pairs `dataset`, a loaded `Dataset`, holds (its
+    robot's group and leg frames). A generated dataset's scenarios are read as the
+    simulator's input, an imported one's as recorded (see `pair_up`). Without image pairs: a
+    `NoImagePairsError`, which for a generated dataset names the command that constructs
+    some (`symbench.core.data.twins.symmetry_report` does)."""
     from symbench.core.data.storage.files import read_trajectory
     from symbench.core.data.symmetry.measure import measure
 
@@ -231,6 +242,6 @@ def dataset_symmetry(dataset: Any) -> SymmetryReport:
         if imported:
             raise
         raise NoImagePairsError(
-            f"{exc}; `symbench data symmetry {dataset.id} --twins N` constructs N pairs by "
-            "simulating N of its climbs again, turned by one symmetry step"
+            f"{exc}; `symbench data symmetry {dataset.id}` constructs pairs on purpose by "
+            "simulating some of its climbs again under each rotation (`--twins N`: N climbs)"
         ) from None
