@@ -256,7 +256,8 @@ def test_columns_constant_over_a_table_are_folded_into_its_caption(site):
     steps = metric_cell(30.0, 20.0, 40.0)  # every model: seeds 0-2 trained 20, 30, 40 steps
     said = (
         "converge protocol, split iid. Every row: variant acc, backend torch, cl_success "
-        f"0.500, cl_rmse_rad 0.0200, parameters 1\u202f234, steps {steps}, epochs 3.00, "
+        f"0.500, cl_rmse_rad 0.0200, parameters 1\u202f234, learning_rate 0.0005, steps {steps}, "
+        "epochs 3.00, "
         "stopped_by patience 3, seeds 3"
     )
     assert hexa.captions[0] == " ".join(said.split())  # as the reader joins white space

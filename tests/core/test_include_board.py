@@ -34,7 +34,7 @@ def test_my_model_is_ranked_beside_the_boards(tmp_path, make_record):
     assert "| leg-mixer | acc | torch | 3 |" in table
     assert "| sdnn | acc | torch | 3 |" in table
     csv = (out / "leaderboard.csv").read_text()
-    assert ",sdnn,acc,torch,3,1234,epoch-cap 3,0.533333," in csv  # (0.9 + 0.3 + 0.4) / 3
+    assert ",sdnn,acc,torch,3,1234,0.0005,epoch-cap 3,0.533333," in csv  # (0.9 + 0.3 + 0.4) / 3
 
 
 def test_a_folder_of_records_is_a_board_too(tmp_path, make_record):

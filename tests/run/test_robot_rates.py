@@ -84,6 +84,7 @@ def test_the_shipped_table_is_read_and_names_only_built_in_models():
 def test_a_changed_tuned_rate_makes_the_old_record_another_configuration(
     smoke_hexa, tmp_path, monkeypatch
 ):
+    tuned(monkeypatch, tmp_path, "")  # hexa untuned: ffnn's own rate
     first = spec(tmp_path)
     run(first)
     assert read_record(first.record_path).model.learning_rate == OWN

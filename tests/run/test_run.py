@@ -197,7 +197,7 @@ def test_a_record_carries_what_it_takes_to_rerun_it(smoke_home, tmp_path):
         "max_epochs": 3,
         "stop_ratio": 0.7,
         "stop_patience": 5,
-        "learning_rate": 1.5e-3,
+        "learning_rate": registry.model("sdnn", "torch").learning_rates["hexa"],
         "hyper": {},
         "compile": False,
     }
