@@ -151,11 +151,12 @@ class TorchTrainer:
         total = torch.zeros(())
         scales = np.ones(len(order)) if rate_scale is None else rate_scale
         for idx, scale in zip(torch.from_numpy(order), scales, strict=True):
-            batch = {k: v[idx] for k, v in self.train_inputs.items()}
+            # index_select: the same rows as v[idx], without advanced indexing's overhead
+            batch = {k: v.index_select(0, idx) for k, v in self.train_inputs.items()}
             out = self.train_forward(*(batch[k] for k in self.dims.keys))
             # before the loss, which would broadcast (N, legs, 1) against (N, legs, 3) silently
             check_output(self.entry, self.dims, out.shape, len(idx))
-            loss = F.mse_loss(out, self.train_target[idx])
+            loss = F.mse_loss(out, self.train_target.index_select(0, idx))
             self.opt.zero_grad()
             loss.backward()
             self.opt.step(self.learning_rate * float(scale))
