@@ -1,5 +1,5 @@
 """The figures of one thread setting of `symbench bench models`, taken in the process that
-`threads.confine` confined: every row (training rate, batch-1 latency, FLOPs) and both
+`threads.confine` confined: every row (training rate, inference latency, FLOPs) and both
 backends' dense-matmul rates, so that each row's share of the best matmul rate compares
 figures computed with the same cores.
 
@@ -25,6 +25,7 @@ from symbench.core.bench.flops import (
     step_flops_per_sample,
 )
 from symbench.core.bench.threads import XLA_POOL_THREAD, threads_named
+from symbench.core.config.presets import SMALL
 from symbench.core.data.views.model_dims import dims_of
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import BACKENDS
@@ -33,6 +34,8 @@ from symbench.core.training.kernels import TORCH_PINS
 from symbench.core.training.normalization import Normalizer
 
 BATCH = 64
+# the closed loop's call on `small`: every reference at every PD fraction in one batch
+LOCKSTEP = SMALL.closed_loop.references * len(SMALL.closed_loop.pd_fractions)
 CALL_STEPS = 16  # training steps per timed call (gnn in torch: about 0.2 s)
 
 Say = Callable[[str], None]
@@ -54,8 +57,9 @@ def train_rate(entry, views, compiled: bool, seconds: float) -> float:
     return best_rate(lambda: trainer.train_epoch(order), order.size, seconds)
 
 
-def latency_us(entry, views, compiled: bool, seconds: float) -> float:
-    """Median wall time of one batch-1 prediction (normalization included), microseconds."""
+def latency_us(entry, views, compiled: bool, seconds: float, batch: int = 1) -> float:
+    """Median wall time of one prediction of `batch` rows (normalization included),
+    microseconds."""
     data = views[entry.view]
     backend = get_backend(entry.backend)
     dims = dims_of(data)
@@ -68,14 +72,14 @@ def latency_us(entry, views, compiled: bool, seconds: float) -> float:
         np.float32,
         compiled,
     )
-    one = {k: v[:1].astype(np.float32) for k, v in data.inputs.items()}
+    rows = {k: v[:batch].astype(np.float32) for k, v in data.inputs.items()}
     for _ in range(20):
-        predict(one)
+        predict(rows)
     times: list[float] = []
     start = time.perf_counter()
     while time.perf_counter() - start < seconds or len(times) < 50:
         t = time.perf_counter()
-        predict(one)
+        predict(rows)
         times.append(time.perf_counter() - t)
     return 1e6 * statistics.median(times)
 
@@ -83,8 +87,9 @@ def latency_us(entry, views, compiled: bool, seconds: float) -> float:
 def measure(
     entry, views, seconds: float, modes: tuple[bool, ...], latency: bool, say: Say
 ) -> dict[str, Any]:
-    """One row: training rate (and, with `latency`, batch-1 latency) in each mode, and the
-    FLOPs per second of training in its best mode."""
+    """One row: training rate (and, with `latency`, the latency of a batch-1 call and of the
+    closed loop's lockstep call) in each mode, and the FLOPs per second of training in its
+    best mode."""
     row: dict[str, Any] = {"model": entry.name, "backend": entry.backend}
     names = ["compiled" if c else "plain" for c in modes]
     for compiled, mode in zip(modes, names):
@@ -93,9 +98,12 @@ def measure(
         if latency:
             say(f"batch-1 inference, {mode}")
             row[f"infer_batch1_us_{mode}"] = latency_us(entry, views, compiled, seconds)
+            say(f"lockstep inference ({LOCKSTEP} rows), {mode}")
+            row[f"infer_lockstep_us_{mode}"] = latency_us(entry, views, compiled, seconds, LOCKSTEP)
     row["train_best"] = max(names, key=lambda m: row[f"train_samples_per_s_{m}"])
     if latency:
         row["infer_best"] = min(names, key=lambda m: row[f"infer_batch1_us_{m}"])
+        row["lockstep_best"] = min(names, key=lambda m: row[f"infer_lockstep_us_{m}"])
     say("counting FLOPs")
     flops = step_flops_per_sample(entry, dims_of(views[entry.view]), BATCH)
     row["train_flops_per_sample"] = flops
