@@ -24,6 +24,7 @@ class FusedAdam:
         self.params = params
         self.state: dict[int, dict[str, torch.Tensor]] = {}
         self._lists: tuple[tuple[int, ...], tuple[list[torch.Tensor], ...]] | None = None
+        self._counts = torch.zeros(0)
 
     def zero_grad(self) -> None:
         for p in self.params:
@@ -34,7 +35,7 @@ class FusedAdam:
         """One update of every parameter holding a gradient, at learning rate `lr`."""
         grads = [(i, p.grad) for i, p in enumerate(self.params) if p.grad is not None]
         params, exp_avgs, exp_avg_sqs, steps = self._tensors(tuple(i for i, _ in grads))
-        torch._foreach_add_(steps, 1)
+        self._counts.add_(1)  # every entry of `steps` at once (they are its elements)
         torch._fused_adam_(
             params,
             [g for _, g in grads],
@@ -66,6 +67,12 @@ class FusedAdam:
                     "exp_avg": torch.zeros_like(p, memory_format=torch.preserve_format),
                     "exp_avg_sq": torch.zeros_like(p, memory_format=torch.preserve_format),
                 }
+        # the step counts as elements of one vector, incremented by one kernel: torch's
+        # `_foreach_add_` on CPU scalars ran a kernel and a conversion per parameter (gnn:
+        # 0.5 ms a step for 116 parameters)
+        self._counts = torch.stack([self.state[i]["step"] for i in active])
+        for j, i in enumerate(active):
+            self.state[i]["step"] = self._counts[j]
         lists: tuple[list[torch.Tensor], ...] = (
             [self.params[i] for i in active],
             [self.state[i]["exp_avg"] for i in active],
