@@ -38,7 +38,6 @@ import jax.numpy as jnp
 import numpy as np
 import optax
 from flax import traverse_util
-from jax.flatten_util import ravel_pytree
 
 from symbench.core.data.views.model_dims import ModelDims
 from symbench.core.plugin.entries import ModelEntry
@@ -112,6 +111,33 @@ class Trainable(NamedTuple):
     vector: jax.Array
 
 
+class Raveling:
+    """Which parameter arrays `Trainable.vector` holds, in which order and shape, and the
+    conversions: on the host with numpy (a jitted or eager JAX conversion would compile for
+    every array shape, seconds a training), traced inside the jitted step."""
+
+    def __init__(self, shapes: dict[str, tuple[int, ...]]):
+        self.shapes = {k: shapes[k] for k in sorted(shapes) if np.prod(shapes[k]) < RAVEL_BELOW}
+        self.bounds = np.cumsum([int(np.prod(s)) for s in self.shapes.values()])[:-1].tolist()
+
+    def trainable(self, flat: Params) -> Trainable:
+        arrays = {k: jnp.asarray(v, jnp.float32) for k, v in flat.items() if k not in self.shapes}
+        parts = [np.asarray(flat[k], np.float32).ravel() for k in self.shapes]
+        return Trainable(arrays, jnp.asarray(np.concatenate([np.zeros(0, np.float32), *parts])))
+
+    def flat(self, p: Trainable) -> Params:
+        """The arrays by name, as numpy copies."""
+        parts = np.split(np.array(p.vector), self.bounds) if self.shapes else []
+        small = {k: a.reshape(s) for (k, s), a in zip(self.shapes.items(), parts, strict=True)}
+        return {**{k: np.array(v) for k, v in p.arrays.items()}, **small}
+
+    def tree(self, p: Trainable) -> dict:
+        """The network's nested parameters, inside a jitted function."""
+        parts = jnp.split(p.vector, self.bounds) if self.shapes else []
+        small = {k: a.reshape(s) for (k, s), a in zip(self.shapes.items(), parts, strict=True)}
+        return traverse_util.unflatten_dict({**p.arrays, **small}, sep="/")
+
+
 class JaxTrainer:
     """Adam on the small parameter arrays raveled into one vector (`Trainable`): XLA runs
     Adam's update as a few loops per array, each costing microseconds before any work, and
@@ -131,13 +157,13 @@ class JaxTrainer:
     ):
         self.to_tree = to_tree
         self.tx = optax.adam(learning_rate)  # each step's update then times its rate scale
-        small = {k for k, v in params.items() if np.size(v) < RAVEL_BELOW}
-        self.unravel = ravel_pytree({k: jnp.asarray(params[k]) for k in sorted(small)})[1]
+        self.raveling = Raveling({k: np.shape(v) for k, v in params.items()})
         trainable = self._trainable(params)
         self.state = (trainable, self.tx.init(trainable))
+        tree = self.raveling.tree
 
         def loss_fn(p, inputs, target):
-            out = net.apply({"params": self._tree(p)}, **inputs)
+            out = net.apply({"params": tree(p)}, **inputs)
             return jnp.mean((out - target) ** 2)
 
         def step(state, idx_scale, inputs, target):
@@ -156,7 +182,7 @@ class JaxTrainer:
 
         def sse(p, inputs, target, idx, weight):
             batch = {k: v[idx] for k, v in inputs.items()}
-            err = net.apply({"params": self._tree(p)}, **batch) - target[idx]
+            err = net.apply({"params": tree(p)}, **batch) - target[idx]
             return jnp.sum(weight[:, None, None] * err.astype(jnp.float32) ** 2)
 
         self._epoch = jax.jit(epoch, donate_argnums=0) if compiled else None
@@ -164,14 +190,9 @@ class JaxTrainer:
         self._sse = jax.jit(sse)
 
     def _trainable(self, params: Params) -> Trainable:
-        flat = flatten(self.to_tree(params))  # checked against the network, float32
-        small = {k: v for k, v in flat.items() if v.size < RAVEL_BELOW}
-        arrays = {k: jnp.asarray(v) for k, v in flat.items() if k not in small}
-        return Trainable(arrays, ravel_pytree({k: jnp.asarray(v) for k, v in small.items()})[0])
-
-    def _tree(self, p: Trainable) -> dict:
-        """The network's nested parameters."""
-        return traverse_util.unflatten_dict({**p.arrays, **self.unravel(p.vector)}, sep="/")
+        """`params` checked against the network (names, shapes), as Adam sees them."""
+        self.to_tree(params)
+        return self.raveling.trainable(params)
 
     def set_data(self, train_inputs, train_target, val_inputs, val_target) -> None:
         def arrays(d):
@@ -206,15 +227,20 @@ class JaxTrainer:
         return total / target.size
 
     def params(self) -> Params:
-        return flatten(self._tree(self.state[0]))
+        return self.raveling.flat(self.state[0])
 
     def load_params(self, params: Params) -> None:
         self.state = (self._trainable(params), self.state[1])
 
     def _per_array(self, opt_state: Any) -> Any:
-        """Adam's state with each `Trainable` (its moments) as the network's nested arrays."""
+        """Adam's state with each `Trainable` (its moments) as the network's nested arrays
+        (numpy): the layout of checkpoints."""
         return jax.tree_util.tree_map(
-            lambda x: self._tree(x) if isinstance(x, Trainable) else x,
+            lambda x: (
+                traverse_util.unflatten_dict(self.raveling.flat(x), sep="/")
+                if isinstance(x, Trainable)
+                else x
+            ),
             opt_state,
             is_leaf=lambda x: isinstance(x, Trainable),
         )
@@ -225,13 +251,15 @@ class JaxTrainer:
 
     def load_optimizer_state(self, state: Params) -> None:
         paths, treedef = jax.tree_util.tree_flatten_with_path(self._per_array(self.state[1]))
-        leaves = [jnp.asarray(state[jax.tree_util.keystr(path)]) for path, _ in paths]
+        leaves = [np.asarray(state[jax.tree_util.keystr(path)]) for path, _ in paths]
         per_array = jax.tree_util.tree_unflatten(treedef, leaves)
         self.state = (
             self.state[0],
             jax.tree_util.tree_map(
-                lambda own, tree: (
-                    self._trainable(flatten(tree)) if isinstance(own, Trainable) else tree
+                lambda own, arrays: (
+                    self.raveling.trainable(traverse_util.flatten_dict(arrays, sep="/"))
+                    if isinstance(own, Trainable)
+                    else jnp.asarray(arrays)
                 ),
                 self.state[1],
                 per_array,
