@@ -18,6 +18,7 @@ import numpy as np
 
 from symbench.core.common.atomic import write_bytes_atomic
 from symbench.core.common.errors import SymbenchError
+from symbench.core.common.jsonfile import one_line
 from symbench.core.data.storage.columns import flatten, unflatten
 
 
@@ -66,9 +67,10 @@ def read_columns(path: Path) -> dict[str, np.ndarray]:
 
     try:
         table = pq.read_table(path)
-    except (OSError, pa.ArrowException) as exc:
-        raise SymbenchError(f"{path}: not a readable Parquet file ({exc})") from None
-    return {name: table.column(name).to_numpy() for name in table.column_names}
+        # a damaged name is decoded only here (UnicodeDecodeError, a ValueError)
+        return {name: table.column(name).to_numpy() for name in table.column_names}
+    except (OSError, ValueError, pa.ArrowException) as exc:
+        raise SymbenchError(f"{path}: not a readable Parquet file ({one_line(exc)})") from None
 
 
 def step_count(path: Path) -> int:
@@ -79,7 +81,7 @@ def step_count(path: Path) -> int:
     try:
         return pq.read_metadata(path).num_rows
     except (OSError, pa.ArrowException) as exc:
-        raise SymbenchError(f"{path}: not a readable Parquet file ({exc})") from None
+        raise SymbenchError(f"{path}: not a readable Parquet file ({one_line(exc)})") from None
 
 
 def read_trajectory(path: Path, n_legs: int) -> dict[str, np.ndarray]:
