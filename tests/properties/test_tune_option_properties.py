@@ -86,7 +86,8 @@ def test_tune_grids_are_refused_in_one_line_or_searched_as_given(smoke_home, mod
         summary = json.loads(path.read_text())
     event("searched")
     entry = registry.model(model, "torch")
-    grid = {(float(r), float(s)) for r in rates.split(",") for s in scales.split(",")}
+    listed = [[float(v) for v in text.split(",") if v.strip()] for text in (rates, scales)]
+    grid = {(r, s) for r in listed[0] for s in listed[1]}  # as the command line reads them
     assert {(g["learning_rate"], g["width_scale"]) for g in summary["grid"]} == grid
     trained = {(t["learning_rate"], t["width_scale"]) for t in summary["trials"]}
     assert grid <= trained and len(trained - grid) <= tuning.MAX_EXTENSIONS
