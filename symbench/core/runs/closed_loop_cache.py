@@ -13,7 +13,7 @@ from __future__ import annotations
 import hashlib
 import io
 import json
-from dataclasses import dataclass, fields
+from dataclasses import MISSING, dataclass, fields
 from pathlib import Path
 from typing import Any
 
@@ -105,10 +105,12 @@ def read_calibration(
 
 
 def _tracking(row: Any) -> Tracking:
-    """A Tracking from its cached row, every field present and of its type."""
-    names = [f.name for f in fields(Tracking)]
-    if not isinstance(row, dict) or sorted(row) != sorted(names):
-        raise ValueError(f"a tracking row has fields {names}")
+    """A Tracking from its cached row: its fields (those with a default may be left out),
+    each of its type."""
+    names = {f.name for f in fields(Tracking)}
+    required = {f.name for f in fields(Tracking) if f.default is MISSING}
+    if not isinstance(row, dict) or set(row) - names or required - set(row):
+        raise ValueError(f"a tracking row has fields {sorted(names)}")
     for name, value in row.items():
         types = _TYPES.get(name, (int, float))
         if not isinstance(value, types) or (isinstance(value, bool) and bool not in types):
