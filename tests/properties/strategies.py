@@ -1,14 +1,17 @@
 """Hypothesis strategies for what symbench reads: JSON of any shape, a valid document with
-one thing changed, arbitrary bytes, and trajectory columns with one defect."""
+one thing changed, arbitrary bytes, a valid file with a few bytes changed (an npz with its
+checksums made right again), and trajectory columns with one defect."""
 
 from __future__ import annotations
 
 import copy
 import json
+import zipfile
 from collections.abc import Iterator
 from typing import Any
 
 import numpy as np
+from crafted_npz import npy_members, npz_bytes
 from hypothesis import strategies as st
 
 FLOATS = st.floats() | st.sampled_from([1e300, -1e300, 3.5e38, 1e-320, 0.0])
@@ -102,3 +105,47 @@ def defective(
     elif kind == "pickled":  # np.savez pickles object arrays
         out[name] = out[name].astype(object)
     return out
+
+
+# what a changed byte becomes: the digits, brackets and letters of an .npy header's text (its
+# shape, dtype and order), or any byte
+HEADER_BYTES = st.sampled_from(list(b"0123456789(),: '<>|fiuUSOVbcmM{}LNTrue")) | st.integers(
+    0, 255
+)
+
+
+@st.composite
+def changed(draw: st.DrawFn, content: bytes, near_start: int | None = None) -> bytes:
+    """`content` with one to four bytes changed (within its first `near_start` bytes when
+    given, where a file's header is), cut short, or a run of it repeated."""
+    out = bytearray(content)
+    kind = draw(st.sampled_from(["bytes", "bytes", "cut", "repeat"]))
+    if kind == "cut":
+        return bytes(out[: draw(st.integers(0, max(len(out) - 1, 0)))])
+    if kind == "repeat":
+        start = draw(st.integers(0, len(out) - 1))
+        end = draw(st.integers(start, min(len(out), start + 64)))
+        return bytes(out[:end] + out[start:end] * draw(st.integers(1, 4)) + out[end:])
+    span = min(len(out), near_start or len(out))
+    for _ in range(draw(st.integers(1, 4))):
+        out[draw(st.integers(0, span - 1))] = draw(HEADER_BYTES)
+    return bytes(out)
+
+
+@st.composite
+def changed_npz(draw: st.DrawFn, arrays: dict[str, np.ndarray]) -> bytes:
+    """An npz of `arrays` with one entry's bytes changed (mostly in its header), renamed
+    without its .npy suffix, or another entry added, stored or compressed, every checksum
+    right."""
+    members = npy_members(arrays)
+    name = draw(st.sampled_from(sorted(members)))
+    kind = draw(st.sampled_from(["header", "header", "anywhere", "suffix", "extra"]))
+    if kind == "suffix":
+        members[name.removesuffix(".npy")] = members.pop(name)
+    elif kind == "extra":
+        members[draw(st.sampled_from(["notes.txt", name.removesuffix(".npy")]))] = draw(
+            st.binary(max_size=40) | st.just(members[name])
+        )
+    else:
+        members[name] = draw(changed(members[name], 128 if kind == "header" else None))
+    return npz_bytes(members, draw(st.sampled_from([zipfile.ZIP_STORED, zipfile.ZIP_DEFLATED])))

@@ -9,17 +9,17 @@ import numpy as np
 import pyarrow as pa
 import pyarrow.parquet as pq
 import pytest
-from hypothesis import given
+from hypothesis import event, given
 from hypothesis import strategies as st
 from sandbox import files_under, fresh_home
-from strategies import FILE_BYTES, NASTY_TEXT, defective, edited
+from strategies import FILE_BYTES, NASTY_TEXT, changed, changed_npz, defective, edited
 from synthetic_raw import N_LEGS, synthetic_raw, write_logs
 
 from symbench.core.common.errors import SymbenchError
 from symbench.core.data.importing.derive import DERIVABLE, derivative
 from symbench.core.data.importing.importer import import_logs
 from symbench.core.data.storage.columns import flatten, unflatten
-from symbench.core.data.storage.files import read_trajectory
+from symbench.core.data.storage.files import read_trajectory, trajectory_bytes
 from symbench.core.robot.specs import load_robot
 from symbench.core.sim.raw import COLUMN_NAMES
 
@@ -118,3 +118,36 @@ def test_a_log_file_of_arbitrary_bytes_is_named(tmp_path_factory, fmt, content):
     with fresh_home() as home, pytest.raises(SymbenchError) as error:
         import_logs(folder, "log")
     assert_refused(error.value, home, str(path))
+
+
+@given(fmt=st.sampled_from(["npz", "parquet"]), data=st.data())
+def test_a_log_file_with_bytes_changed_is_named_or_read_as_numpy_reads_it(
+    tmp_path_factory, fmt, data
+):
+    """Damage within a valid file: its header's shape or dtype changed, its bytes changed, cut
+    or repeated (an npz with its checksums right, so numpy's parser sees the damage)."""
+    raw = synthetic_raw(LEGS, 12, seed=3)
+    folder = tmp_path_factory.mktemp("log")
+    path = folder / f"run.{fmt}"
+    if fmt == "npz":
+        path.write_bytes(data.draw(changed_npz(raw)))
+    else:
+        path.write_bytes(data.draw(changed(trajectory_bytes(raw, LEGS))))
+    (folder / "import.json").write_text(
+        json.dumps({**MANIFEST, "trajectories": [{"file": path.name}]})
+    )
+    with fresh_home() as home:
+        try:
+            dataset = import_logs(folder, "log")
+        except SymbenchError as error:
+            event("refused")
+            assert_refused(error, home, str(path))
+            return
+        stored = read_trajectory(dataset.root / dataset.metadata["trajectories"][0]["file"], LEGS)
+    event("imported")
+    if fmt == "npz":  # read here as numpy reads it, now that symbench found it sound
+        with np.load(path, allow_pickle=False) as npz:
+            written = {k: npz[k] for k in npz.files}
+    else:
+        written = unflatten(pq.read_table(path).to_pydict(), LEGS, str(path))
+    assert_same_columns(stored, written)

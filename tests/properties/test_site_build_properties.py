@@ -1,6 +1,8 @@
 """Whatever one file among a board's genuine records holds (any bytes, or a record edited
 field by field, sealed again or not), building the board's tables and site gives the board
-or a one-line refusal: never an internal error."""
+or a one-line refusal, whether the file is among one's own records or an included board's
+(`--include-board`); `publish --dry-run` names each record it refuses and writes nothing:
+never an internal error."""
 
 from __future__ import annotations
 
@@ -61,3 +63,50 @@ def test_a_board_with_one_odd_file_builds_or_is_refused_in_one_line(tmp_path, ge
         return
     event("refused")
     assert "odd.json" in refusal(result)
+
+
+@SHARED_FIXTURES
+@given(data=st.data())
+def test_an_included_board_with_one_odd_file_builds_or_is_refused_in_one_line(
+    tmp_path, genuine, data
+):
+    """The odd file among the records of a board ranked beside one's own (`--include-board`)."""
+    results, board = tmp_path / "results", tmp_path / "board" / "records"
+    for folder in (results, board):
+        shutil.rmtree(folder, ignore_errors=True)
+        folder.mkdir(parents=True)
+    for path in genuine:
+        shutil.copy(path, (results if "seed0" in path.name else board) / path.name)
+    (board / "odd.json").write_bytes(odd_file(data, genuine))
+    out = tmp_path / "out"
+    shutil.rmtree(out, ignore_errors=True)
+    result = invoke(
+        "leaderboard", "--results", results, "--include-board", board.parent,
+        "--out", out / "md", "--html", out / "site",
+    )  # fmt: skip
+    if result.exit_code == 0:
+        event("built")
+        assert (out / "site" / "index.html").is_file()
+        return
+    event("refused")
+    assert "odd.json" in refusal(result)
+
+
+@SHARED_FIXTURES
+@given(data=st.data())
+def test_publish_dry_run_over_an_odd_record_reports_it_and_writes_nothing(tmp_path, genuine, data):
+    odd = tmp_path / "odd.json"
+    odd.write_bytes(odd_file(data, genuine))
+    board = tmp_path / "board"
+    shutil.rmtree(board, ignore_errors=True)
+    board.mkdir()
+    result = invoke("publish", "--dry-run", "--to", board, odd, *genuine)
+    assert list(board.iterdir()) == []  # a dry run writes nothing
+    if result.exit_code == 0:
+        event("accepted")
+        return
+    event("refused")
+    assert refusal(result).startswith("Error: publish would refuse these records")
+    refused = [line for line in result.stdout.splitlines() if line.startswith("refused: ")]
+    named = [str(path) for path in (odd, *genuine)]  # odd.json, or a record it clashes with
+    assert refused and all(any(p in line for p in named) for line in refused), result.stdout

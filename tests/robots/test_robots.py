@@ -2,8 +2,11 @@
 
 from __future__ import annotations
 
+import tomllib
+
 import numpy as np
 import pytest
+from toml_writer import toml_text
 
 from symbench.core.common.errors import SymbenchError
 from symbench.core.robot.specs import load_robot, load_spec, parse_spec
@@ -210,3 +213,39 @@ def test_physically_impossible_values_are_named(table, key, value, message):
     raw[table][key] = value
     with pytest.raises(SymbenchError, match=message):
         parse_spec(raw)
+
+
+@pytest.mark.parametrize(
+    ("edit", "message"),
+    [
+        (lambda raw: raw.update(n_legs="six"), "n_legs: expected an integer, got 'six'"),
+        (lambda raw: raw.update(stance=0.5), "[stance] must be a table, got 0.5"),
+        (lambda raw: raw["ankle"].update(inertias=True), "inertias needs 3 rows"),
+        (lambda raw: raw["base"].update(mass=True), "base.mass: expected a number, got True"),
+        (lambda raw: raw["mounts"].update(z="0.1"), "[mounts] z: expected a number, got '0.1'"),
+        (lambda raw: raw["symmetry"].update(kind="cycli"), "[symmetry]: unknown symmetry group"),
+    ],
+    ids=[
+        "text for a count",
+        "number for a table",
+        "flag for rows",
+        "flag for a mass",
+        "text for a number",
+        "unknown group",
+    ],
+)
+def test_a_value_of_another_type_is_refused_naming_the_file_and_entry(tmp_path, edit, message):
+    """Before: ValueError or TypeError, internal errors (found by the property suite), a
+    flag read as the number 1, and an unknown group named without its file."""
+    raw = tomllib.loads((ROBOTS_DIR / "hexa" / "robot.toml").read_text())
+    edit(raw)
+    (tmp_path / "robot.toml").write_text(toml_text(raw))
+    with pytest.raises(SymbenchError) as error:
+        load_spec(tmp_path)
+    assert str(error.value).startswith(str(tmp_path / "robot.toml")) and message in str(error.value)
+
+
+def test_a_robot_toml_that_is_no_utf8_is_refused_naming_it(tmp_path):
+    (tmp_path / "robot.toml").write_bytes(b"name = '\xff'\n")
+    with pytest.raises(SymbenchError, match=r"robot.toml: not valid TOML \('utf-8' codec"):
+        load_spec(tmp_path)

@@ -4,10 +4,12 @@ from __future__ import annotations
 
 import dataclasses
 import json
+from unittest import mock
 
 import pytest
 from cli_invoke import error_line, invoke
 
+from symbench.core.common.errors import SymbenchError
 from symbench.core.data import load_dataset
 from symbench.core.plugin import registry
 from symbench.core.runs import tune as tuning
@@ -124,3 +126,40 @@ def test_a_damaged_journal_is_named_with_how_to_go_on(smoke_hexa, tmp_path):
         "column 1 (char 1)); to go on, move it aside and run the same command again: the "
         "search starts afresh (its finished trials are trained again)"
     )
+
+
+def test_a_width_scale_that_cannot_build_the_model_is_refused_before_any_work(
+    home, tmp_path, monkeypatch
+):
+    """Before: any scale up to 1000 was taken, and sdnn at 1000 x its widths (147 billion
+    parameters) asked torch for 590 GB in the search's first trial."""
+    monkeypatch.setattr(loop, "train", mock.Mock(side_effect=AssertionError("trained")))
+    command = ("tune", "--model", "sdnn", "--robot", "hexa", "--preset", "smoke")
+    result = invoke(*command, "--width-scales", "1,1000", "--output", tmp_path)
+    assert error_line(result, 1) == (
+        "Error: --width-scales 1000: a width scale of model sdnn/torch is in [0.001, 64]; the "
+        "nearest allowed: 64"
+    )
+    assert not home.exists()  # refused before the dataset was made
+
+
+def test_a_width_scale_a_plugin_cannot_build_names_the_nearest_that_builds(home, monkeypatch):
+    """A build function may refuse widths (here an odd latent): the scale is refused before
+    any work, naming the nearest scale whose network builds."""
+    entry = registry.model("sdnn", "torch")
+
+    def even_only(dims, latent=128, **sizes):
+        if latent % 2:
+            raise ValueError(f"latent must be even, got {latent}")
+        return entry.build(dims, latent=latent, **sizes)
+
+    odd = dataclasses.replace(entry, build=even_only)
+    monkeypatch.setattr(tuning, "model_entry", lambda _: odd)
+    monkeypatch.setattr(loop, "train", mock.Mock(side_effect=AssertionError("trained")))
+    with pytest.raises(SymbenchError) as error:
+        tuning.tune(spec(home), RATES, (1.0, 0.5078125), home, report=lambda _: None)
+    assert str(error.value) == (
+        "--width-scales 0.507812 (latent=65): model sdnn/torch could not be built: ValueError: "
+        "latent must be even, got 65; nearest buildable: 0.5 (latent=64)"
+    )
+    assert not home.exists()

@@ -187,6 +187,39 @@ def test_summarize_refuses_what_is_no_summary_in_one_line(tmp_path):
     assert "Missing option '--model'" in error_line(invoke("tune", "--robot", "hexa"), 2)
 
 
+def write_summary(path: Path, robot) -> None:
+    """A summary of one finished trial, of `robot`."""
+    trial = {"learning_rate": 1e-3, "width_scale": 1.0, "hyper": {"width": 256}}
+    trial |= {"parameters": 1, "best_val_loss": 0.5, "steps": 1, "stopped_by": "x"}
+    names = {"robot": robot, "model": "ffnn", "backend": "torch", "dataset": "d"}
+    path.write_text(json.dumps({**names, "trials": [trial], "best": trial}))
+
+
+def test_summarize_refuses_a_name_that_is_no_text_naming_the_file(tmp_path):
+    """Before: "internal error: TypeError: '<' not supported between instances of 'NoneType'
+    and 'str'" (the summaries are sorted by robot); found by the property suite."""
+    write_summary(tmp_path / "a.tune.json", None)
+    write_summary(tmp_path / "b.tune.json", "hexa")
+    assert error_line(invoke("tune", "summarize", str(tmp_path)), 1) == (
+        f"Error: tuning summary {tmp_path / 'a.tune.json'} has robot null, not a name: not a "
+        "`symbench tune` summary"
+    )
+
+
+def test_summarize_refuses_an_out_it_cannot_write_before_reading(tmp_path):
+    """Before: --out under a file ended in "internal error: FileExistsError" once the
+    summaries were read."""
+    write_summary(tmp_path / "a.tune.json", "hexa")
+    (tmp_path / "blocker").write_text("a file")
+    under_a_file = tmp_path / "blocker" / "t.md"
+    assert error_line(invoke("tune", "summarize", tmp_path, "--out", under_a_file), 2) == (
+        f"Error: Invalid value for '--out': '{under_a_file}': cannot write there (File exists)"
+    )
+    assert error_line(invoke("tune", "summarize", tmp_path, "--out", tmp_path), 2) == (
+        f"Error: Invalid value for '--out': '{tmp_path}' is a folder, not a file"
+    )
+
+
 def test_the_board_s_hexa_searches_give_the_zoo_s_learning_rates():
     """The searches of leaderboards/tuning (several files per model: they were extended past
     the edge by hand) choose the rates the zoo has: the tool reproduces the hand's work."""

@@ -81,3 +81,21 @@ class WritableFolder(click.ParamType):
         if reason is not None:
             self.fail(f"{str(folder)!r}: cannot write there ({reason})", param, ctx)
         return folder
+
+
+class WritableFile(click.ParamType):
+    """A file to write: not a folder, in a folder that exists or can be made and into which
+    files can be written (checked before any work, as `WritableFolder`)."""
+
+    name = "file"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Path:
+        path = Path(value)
+        if "\x00" in str(path):
+            self.fail(f"{str(path)!r} holds a NUL character", param, ctx)
+        if path.is_dir():
+            self.fail(f"{str(path)!r} is a folder, not a file", param, ctx)
+        reason = unwritable_reason(path.parent)
+        if reason is not None:
+            self.fail(f"{str(path)!r}: cannot write there ({reason})", param, ctx)
+        return path

@@ -27,6 +27,8 @@ from typing import Any
 import numpy as np
 
 from symbench.core.common.errors import SymbenchError
+from symbench.core.common.jsonfile import one_line
+from symbench.core.robot import spec_values as v
 from symbench.core.symmetry.groups import LegGroup, from_spec
 from symbench.core.symmetry.legs import check_geometry, geometry_group
 
@@ -165,85 +167,32 @@ class RobotSpec:
         return self.base_mass + per_leg * sum(map(self.leg_mass_scale, range(self.n_legs)))
 
 
-def _get(table: dict[str, Any], key: str, where: str) -> Any:
-    if key not in table:
-        raise SymbenchError(f"{where}: missing '{key}'")
-    return table[key]
-
-
-def _floats(value: Any, n: int, where: str) -> tuple[float, ...]:
-    try:
-        arr = np.asarray(value, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise SymbenchError(f"{where}: expected {n} numbers, got {value!r}") from None
-    if arr.shape != (n,) or not np.all(np.isfinite(arr)):
-        raise SymbenchError(f"{where}: expected {n} finite numbers, got {value!r}")
-    return tuple(float(x) for x in arr)
-
-
-def _positive(value: Any, where: str) -> float:
-    try:
-        x = float(value)
-    except (TypeError, ValueError):
-        raise SymbenchError(f"{where}: expected a number, got {value!r}") from None
-    if not np.isfinite(x) or x <= 0:
-        raise SymbenchError(f"{where}: expected a positive number, got {value!r}")
-    return x
-
-
-def _non_negative(value: Any, where: str) -> float:
-    """Damping and stiffness: zero is allowed, a negative value would inject energy."""
-    if value == 0:
-        return 0.0
-    try:
-        return _positive(value, where)
-    except SymbenchError:
-        raise SymbenchError(f"{where}: expected a non-negative number, got {value!r}") from None
-
-
-def _positive_floats(value: Any, n: int, where: str) -> tuple[float, ...]:
-    """Masses and principal inertias: MuJoCo needs them strictly positive."""
-    out = _floats(value, n, where)
-    if min(out) <= 0:
-        raise SymbenchError(f"{where}: expected {n} positive numbers, got {value!r}")
-    return out
-
-
-def _limits(lower: Any, upper: Any, where: str) -> tuple[tuple[float, ...], tuple[float, ...]]:
-    lo, hi = _floats(lower, 3, f"{where} lower"), _floats(upper, 3, f"{where} upper")
-    if any(a >= b for a, b in zip(lo, hi)):
-        raise SymbenchError(f"{where}: every lower limit must be below its upper limit")
-    return lo, hi
-
-
-def _positives(table: dict[str, Any], keys: tuple[str, ...], where: str) -> list[float]:
-    return [_positive(_get(table, k, where), f"{where} {k}") for k in keys]
-
-
 def _parse_leg(raw: dict[str, Any], src: str) -> LegSpec:
-    leg, ankle, stance = (_get(raw, k, src) for k in ("leg", "ankle", "stance"))
+    leg, ankle, stance = (v.table(raw, k, src) for k in ("leg", "ankle", "stance"))
     w = f"{src} [leg]"
     lengths = {
-        k: _positive(_get(_get(leg, "lengths", w), k, w + " lengths"), f"{w} lengths.{k}")
+        k: v.positive(v.get(v.table(leg, "lengths", w), k, w + " lengths"), f"{w} lengths.{k}")
         for k in (*JOINT_NAMES, "foot")
     }
     masses = {
-        k: _positive(_get(_get(leg, "masses", w), k, w + " masses"), f"{w} masses.{k}")
+        k: v.positive(v.get(v.table(leg, "masses", w), k, w + " masses"), f"{w} masses.{k}")
         for k in JOINT_NAMES
     }
     inertias = {
-        k: _positive_floats(
-            _get(_get(leg, "inertias", w), k, w + " inertias"), 3, f"{w} inertias.{k}"
+        k: v.positive_floats(
+            v.get(v.table(leg, "inertias", w), k, w + " inertias"), 3, f"{w} inertias.{k}"
         )
         for k in JOINT_NAMES
     }
-    lower, upper = _limits(_get(leg, "joint_lower", w), _get(leg, "joint_upper", w), f"{w} joint")
+    joint = f"{w} joint"
+    lower, upper = v.limits(v.get(leg, "joint_lower", w), v.get(leg, "joint_upper", w), joint)
     a = f"{src} [ankle]"
-    ankle_lower, ankle_upper = _limits(_get(ankle, "lower", a), _get(ankle, "upper", a), a)
-    ankle_inertias = _get(ankle, "inertias", a)
-    if len(ankle_inertias) != 3:
+    ankle_lower, ankle_upper = v.limits(v.get(ankle, "lower", a), v.get(ankle, "upper", a), a)
+    ankle_inertias = v.get(ankle, "inertias", a)
+    if not isinstance(ankle_inertias, list) or len(ankle_inertias) != 3:
         raise SymbenchError(f"{a}: inertias needs 3 rows (one per gimbal link)")
-    pose = (0.0, float(_get(stance, "femur", src)), float(_get(stance, "tibia", src)))
+    femur, tibia = (v.number(v.get(stance, k, src), f"{src} [stance] {k}") for k in JOINT_NAMES[1:])
+    pose = (0.0, femur, tibia)
     if any(not lo <= p <= hi for p, lo, hi in zip(pose, lower, upper)):
         raise SymbenchError(f"{src} [stance]: {pose} lies outside the joint limits")
     return LegSpec(
@@ -252,59 +201,62 @@ def _parse_leg(raw: dict[str, Any], src: str) -> LegSpec:
         inertias=inertias,
         joint_lower=lower,
         joint_upper=upper,
-        joint_damping=_non_negative(leg.get("joint_damping", 0.0), w + " joint_damping"),
-        ankle_masses=_positive_floats(_get(ankle, "masses", a), 3, a + " masses"),
-        ankle_inertias=tuple(_positive_floats(r, 3, a + " inertias") for r in ankle_inertias),
+        joint_damping=v.non_negative(leg.get("joint_damping", 0.0), w + " joint_damping"),
+        ankle_masses=v.positive_floats(v.get(ankle, "masses", a), 3, a + " masses"),
+        ankle_inertias=tuple(v.positive_floats(r, 3, a + " inertias") for r in ankle_inertias),
         ankle_lower=ankle_lower,
         ankle_upper=ankle_upper,
-        ankle_damping=_non_negative(_get(ankle, "damping", a), a + " damping"),
-        ankle_stiffness=_non_negative(_get(ankle, "stiffness", a), a + " stiffness"),
-        sole_radius=_positive(_get(ankle, "sole_radius", a), a + " sole_radius"),
+        ankle_damping=v.non_negative(v.get(ankle, "damping", a), a + " damping"),
+        ankle_stiffness=v.non_negative(v.get(ankle, "stiffness", a), a + " stiffness"),
+        sole_radius=v.positive(v.get(ankle, "sole_radius", a), a + " sole_radius"),
         stance=pose,
     )
 
 
 def parse_spec(raw: dict[str, Any], source: str = "robot.toml") -> RobotSpec:
     """Validate a parsed robot.toml; every error names the file and the entry."""
-    name = str(_get(raw, "name", source))
-    n_legs = int(_get(raw, "n_legs", source))
+    name = v.text(v.get(raw, "name", source), f"{source} name")
+    n_legs = v.count(v.get(raw, "n_legs", source), f"{source} n_legs")
     if n_legs < 1:
         raise SymbenchError(f"{source}: n_legs must be positive, got {n_legs}")
-    base, mounts, sym = (_get(raw, k, source) for k in ("base", "mounts", "symmetry"))
-    magnet, control, gait = (_get(raw, k, source) for k in ("magnet", "control", "gait"))
-    m = f"{source} [mounts]"
+    base, mounts, sym = (v.table(raw, k, source) for k in ("base", "mounts", "symmetry"))
+    magnet, control, gait = (v.table(raw, k, source) for k in ("magnet", "control", "gait"))
+    m, y = f"{source} [mounts]", f"{source} [symmetry]"
     spec = RobotSpec(
         name=name,
         n_legs=n_legs,
-        description=str(raw.get("description", "")),
-        base_mass=_positive(_get(base, "mass", source), f"{source} base.mass"),
-        base_inertia=_floats(_get(base, "inertia", source), 3, f"{source} base.inertia"),
-        base_semi_axes=_floats(_get(base, "semi_axes", source), 3, f"{source} base.semi_axes"),
-        mount_radius=_positive(_get(mounts, "radius", m), m + " radius"),
-        mount_z=float(_get(mounts, "z", m)),
-        mount_angles_deg=_floats(_get(mounts, "angles_deg", m), n_legs, m + " angles_deg"),
-        coxa_yaw_deg=_floats(_get(mounts, "coxa_yaw_deg", m), n_legs, m + " coxa_yaw_deg"),
+        description=v.text(raw.get("description", ""), f"{source} description"),
+        base_mass=v.positive(v.get(base, "mass", source), f"{source} base.mass"),
+        base_inertia=v.floats(v.get(base, "inertia", source), 3, f"{source} base.inertia"),
+        base_semi_axes=v.floats(v.get(base, "semi_axes", source), 3, f"{source} base.semi_axes"),
+        mount_radius=v.positive(v.get(mounts, "radius", m), m + " radius"),
+        mount_z=v.number(v.get(mounts, "z", m), m + " z"),
+        mount_angles_deg=v.floats(v.get(mounts, "angles_deg", m), n_legs, m + " angles_deg"),
+        coxa_yaw_deg=v.floats(v.get(mounts, "coxa_yaw_deg", m), n_legs, m + " coxa_yaw_deg"),
         leg=_parse_leg(raw, source),
         magnet=MagnetSpec(
-            *_positives(magnet, ("force", "friction", "contact_distance"), f"{source} [magnet]")
+            *v.positives(magnet, ("force", "friction", "contact_distance"), f"{source} [magnet]")
         ),
         control=ControlSpec(
-            *_positives(control, ("torque_limit", "kp", "kd", "timestep"), f"{source} [control]")
+            *v.positives(control, ("torque_limit", "kp", "kd", "timestep"), f"{source} [control]")
         ),
         gait=GaitSpec(
-            *_positives(
+            *v.positives(
                 gait,
                 ("release", "swing", "touchdown", "swing_height", "step_length"),
                 f"{source} [gait]",
             )
         ),
-        symmetry_kind=str(_get(sym, "kind", f"{source} [symmetry]")),
-        symmetry_shift=int(sym.get("shift", 1)),
-        symmetry_mirror_offset=int(sym.get("mirror_offset", 0)),
+        symmetry_kind=v.text(v.get(sym, "kind", y), f"{y} kind"),
+        symmetry_shift=v.count(sym.get("shift", 1), f"{y} shift"),
+        symmetry_mirror_offset=v.count(sym.get("mirror_offset", 0), f"{y} mirror_offset"),
         canonical=json.dumps(raw, sort_keys=True, separators=(",", ":")),
         asymmetry=_asymmetry(raw.get("asymmetry", {}), source),
     )
-    group = from_spec(n_legs, spec.symmetry_kind, spec.symmetry_shift, spec.symmetry_mirror_offset)
+    try:
+        group = spec.group
+    except SymbenchError as error:  # the group's own words, without the file
+        raise SymbenchError(f"{y}: {error}") from None
     unwrapped = np.unwrap(np.radians(spec.mount_angles_deg))
     if n_legs > 1 and (
         np.any(np.diff(unwrapped) <= 0) or unwrapped[-1] - unwrapped[0] >= 2 * np.pi
@@ -337,7 +289,7 @@ def _asymmetry(table: Any, source: str) -> float:
     where = f"{source} [asymmetry]"
     if not isinstance(table, dict) or set(table) - {"leg0_heavier"}:
         raise SymbenchError(f"{where}: the only key is leg0_heavier, got {table}")
-    return _non_negative(table.get("leg0_heavier", 0.0), where + " leg0_heavier")
+    return v.non_negative(table.get("leg0_heavier", 0.0), where + " leg0_heavier")
 
 
 def _read_toml(spec_dir: Path) -> tuple[dict[str, Any], Path]:
@@ -345,9 +297,11 @@ def _read_toml(spec_dir: Path) -> tuple[dict[str, Any], Path]:
     if not path.is_file():
         raise SymbenchError(f"robot spec {path} does not exist")
     try:
-        return tomllib.loads(path.read_text()), path
-    except tomllib.TOMLDecodeError as exc:
-        raise SymbenchError(f"{path}: not valid TOML ({exc})") from None
+        return tomllib.loads(path.read_text(encoding="utf-8")), path
+    except (ValueError, RecursionError) as exc:  # TOMLDecodeError, UnicodeDecodeError, nesting
+        raise SymbenchError(
+            f"{path}: not valid TOML ({one_line(exc) or 'nested too deep'})"
+        ) from None
 
 
 def load_spec(spec_dir: Path) -> RobotSpec:

@@ -28,9 +28,6 @@ site's clips (symbench/core/board/site/clips.py). It owns
 
 from __future__ import annotations
 
-import hashlib
-import io
-import json
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, replace
 from functools import cached_property
@@ -39,10 +36,16 @@ from typing import Any
 
 import numpy as np
 
-from symbench.core.common.atomic import write_bytes_atomic
 from symbench.core.common.version import __version__
 from symbench.core.config.presets import ClosedLoop
 from symbench.core.data.views.transforms import build_view
+from symbench.core.runs.closed_loop_cache import (
+    CACHE_VERSION,
+    Calibrated,
+    cache_name,
+    read_calibration,
+    write_calibration,
+)
 from symbench.core.runs.control_policy import feedforward_policy
 from symbench.core.runs.evaluation import rmse
 from symbench.core.sim.scene.push import Push
@@ -62,19 +65,7 @@ from symbench.core.sim.tracking.references import (
     reference_scenarios,
 )
 
-CACHE_VERSION = 2  # bump when what is cached, or how it is measured, changes
-
 Reference = tuple[Scenario, dict[str, np.ndarray]]  # a scenario, the expert's climb of it
-
-
-@dataclass(frozen=True)
-class Calibrated:
-    """One reference the expert held, with the rows that do not depend on the model."""
-
-    scenario: Scenario
-    reference: dict[str, np.ndarray]  # the expert's climb at every physics step
-    oracle: Tracking  # the expert's recorded torques replayed (at the headline fraction)
-    floor: dict[float, Tracking]  # the PD alone, per fraction
 
 
 @dataclass(frozen=True, eq=False)
@@ -161,9 +152,9 @@ class ClosedLoopSetup:
         oracle and the floor. None of it depends on the model: with a `cache` folder it is
         kept there (keyed by dataset content, robot, references and fractions) and read back
         by the next model of a sweep."""
-        folder = None if cache is None else Path(cache) / self._cache_name()
+        folder = None if cache is None else Path(cache) / cache_name(self._cache_key())
         if folder is not None:
-            cached = self._read(folder)
+            cached = read_calibration(folder, self._cache_key(), self.fractions)
             if cached is not None:
                 return cached
         out: list[Calibrated | None] = []
@@ -182,7 +173,7 @@ class ClosedLoopSetup:
                 )
             )
         if folder is not None:
-            self._write(folder, out)
+            write_calibration(folder, self._cache_key(), out)
         return out
 
     def policy(
@@ -246,51 +237,3 @@ class ClosedLoopSetup:
             "servo_gains": list(self.servo_gains),
             "push": [self.budget.push_n, self.budget.push_s],
         }
-
-    def _cache_name(self) -> str:
-        text = json.dumps(self._cache_key(), sort_keys=True, separators=(",", ":"))
-        return hashlib.sha256(text.encode()).hexdigest()[:20]
-
-    def _write(self, folder: Path, measured: list[Calibrated | None]) -> None:
-        """References as .npz (exact float64), then calibration.json last: its presence
-        means the folder is complete."""
-        rows: list[Any] = []
-        for i, item in enumerate(measured):
-            if item is None:
-                rows.append(None)
-                continue
-            npz, arrays = io.BytesIO(), dict[str, Any](item.reference)
-            np.savez(npz, **arrays)
-            write_bytes_atomic(folder / f"reference-{i}.npz", npz.getvalue())
-            rows.append(
-                {
-                    "oracle": dict(vars(item.oracle)),
-                    "floor": [[f, dict(vars(r))] for f, r in item.floor.items()],
-                }
-            )
-        body = json.dumps({"key": self._cache_key(), "references": rows}, indent=1)
-        write_bytes_atomic(folder / "calibration.json", body.encode())
-
-    def _read(self, folder: Path) -> list[Calibrated | None] | None:
-        """The cached calibration when it is complete and of this very key, else None."""
-        key = self._cache_key()
-        try:
-            data = json.loads((folder / "calibration.json").read_text())
-            if data["key"] != json.loads(json.dumps(key)):
-                return None
-            out: list[Calibrated | None] = []
-            rows = zip(key["scenarios"], data["references"], strict=True)
-            for i, (fields, row) in enumerate(rows):
-                if row is None:
-                    out.append(None)
-                    continue
-                with np.load(folder / f"reference-{i}.npz", allow_pickle=False) as npz:
-                    reference = {k: npz[k] for k in npz.files}
-                floor = {float(f): Tracking(**r) for f, r in row["floor"]}
-                if tuple(floor) != self.fractions:
-                    return None
-                scenario = Scenario.from_dict(fields)
-                out.append(Calibrated(scenario, reference, Tracking(**row["oracle"]), floor))
-            return out
-        except (OSError, ValueError, KeyError, TypeError):
-            return None

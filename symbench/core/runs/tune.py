@@ -27,9 +27,12 @@ from typing import Any
 from symbench.core.common.errors import SymbenchError
 from symbench.core.config.protocols import Paper
 from symbench.core.config.provenance import git_commit
+from symbench.core.data.views.model_dims import dims_for
+from symbench.core.robot.specs import load_robot
 from symbench.core.runs.run_config import train_config
 from symbench.core.runs.spec import RunSpec, ensure_dataset, model_entry
 from symbench.core.runs.tune_journal import open_study
+from symbench.core.training.buildable import check_width_scales
 from symbench.core.training.checkpoints import write_json
 from symbench.core.training.sizes import scaled_widths
 
@@ -38,6 +41,9 @@ DEFAULT_WIDTH_SCALES = (0.5, 1.0, 2.0)
 MAX_EXTENSIONS = 3  # rates an edge extension may add to a search
 EDGE_RATIO = 3.0  # the step past an edge when the search has tried a single rate
 RATE_RANGE = (1e-9, 1.0)  # the journal's learning rates: the lowest, and the bound above
+# the journal's width scales: wider than a search may ask (MIN_SCALE to MAX_SCALE), as
+# journals written before that bound say
+SCALE_RANGE = (1e-3, 1e3)
 
 
 @dataclass(frozen=True)
@@ -114,8 +120,8 @@ def tune(
     scales = tuple(float(s) for s in width_scales) if entry.widths else (1.0,)
     if not rates or any(not 0 < r < 1 for r in rates):
         raise SymbenchError(f"learning rates must be numbers in (0, 1), got {list(rates)}")
-    if any(not 1e-3 <= s <= 1e3 for s in scales):
-        raise SymbenchError(f"width scales must be in [0.001, 1000], got {list(scales)}")
+    dims = dims_for(entry.view, entry.variant, load_robot(spec.robot).n_legs)
+    check_width_scales(entry, dims, scales)  # before the dataset is made
     base = train_config(spec)
     dataset = ensure_dataset(spec)
     train_set, val_set, _ = dataset.split_views(entry.view, entry.variant, spec.split, spec.seed)
@@ -128,7 +134,7 @@ def tune(
     # rates or widths) keeps the points it finished and runs only the new ones
     space: dict[str, BaseDistribution] = {
         "learning_rate": FloatDistribution(RATE_RANGE[0], RATE_RANGE[1], log=True),
-        "width_scale": FloatDistribution(1e-3, 1e3, log=True),
+        "width_scale": FloatDistribution(*SCALE_RANGE, log=True),
     }
     search = Search(list(itertools.product(rates, scales)))
 

@@ -63,6 +63,14 @@ def _foreign(params: dict[str, Any], attrs: dict[str, Any]) -> str | None:
         return f"has parameters {sorted(map(str, params))}, not {list(PARAMS)}"
     if not all(isinstance(params[k], float) for k in PARAMS):
         return f"has parameters {json.dumps(params)[:60]}, not numbers"
+    return malformed_trial(attrs)
+
+
+def malformed_trial(attrs: Any) -> str | None:
+    """Why `attrs` are not the fields a finished trial holds (`tune.Trial`'s, ATTRS), each
+    of its type (None: they are); the journal's and the summary's check."""
+    if not isinstance(attrs, dict):
+        return f"has a trial {json.dumps(attrs)[:40]}, not an object"
     for key, types in ATTRS.items():
         value = attrs.get(key)
         if not isinstance(value, types) or isinstance(value, bool):

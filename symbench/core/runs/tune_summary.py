@@ -18,7 +18,7 @@ from typing import Any
 from symbench.core.common.errors import SymbenchError
 from symbench.core.common.jsonfile import read_json
 from symbench.core.runs.tune import on_edge
-from symbench.core.runs.tune_journal import ATTRS
+from symbench.core.runs.tune_journal import malformed_trial
 
 COLUMNS = (
     "robot",
@@ -57,22 +57,25 @@ def read_summaries(folder: Path) -> list[dict[str, Any]]:
 
 
 def _malformed(summary: Any) -> str | None:
-    """What makes `summary` no summary (None: nothing): a missing key, a trial without the
-    fields every finished trial holds (`tune_journal.ATTRS`)."""
+    """What makes `summary` no summary (None: nothing): a missing key, a name that is no
+    text, a trial without the fields every finished trial holds, each of its type
+    (`tune_journal.malformed_trial`)."""
     if not isinstance(summary, dict):
         return "is no JSON object"
     missing = [key for key in SUMMARY_KEYS if key not in summary]
     if missing:
         return f"has no '{missing[0]}'"
+    names = [key for key in SUMMARY_KEYS[:4] if not isinstance(summary[key], str)]
+    if names:
+        return f"has {names[0]} {json.dumps(summary[names[0]])[:40]}, not a name"
     trials = summary["trials"]
     best = [] if summary["best"] is None else [summary["best"]]
     if not isinstance(trials, list):
         return "has trials that are no list"
     for trial in trials + best:
-        if not isinstance(trial, dict) or any(
-            not isinstance(trial.get(key), types) for key, types in ATTRS.items()
-        ):
-            return f"has a trial without {', '.join(ATTRS)}: {json.dumps(trial)[:60]}"
+        why = malformed_trial(trial)
+        if why is not None:
+            return why
     if best and best[0] not in trials:
         return "has a best trial that is none of its trials"
     return None

@@ -8,19 +8,20 @@ The rule, for any model: a width keyword (`ModelEntry.widths`) is at least 1, ev
 build keyword at least 0 (sizes are counts, switches are 0 or 1); none is above MAX_SCALE x
 its default (at least 1), the ceiling `--parameters` searches under, so that no value asks
 for a network too large to allocate or too deep to run; and the network builds, with no
-parameter tensor of zero elements.
+parameter tensor of zero elements. A `symbench tune` width scale is held to the same rule:
+its widths at most MAX_SCALE x their defaults, and a network that builds.
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 
 from symbench.core.common.errors import SymbenchError
 from symbench.core.config.provenance import build_hyperparameters
 from symbench.core.data.views.model_dims import ModelDims
 from symbench.core.plugin.entries import ModelEntry
 from symbench.core.training.backends import get_backend
-from symbench.core.training.sizes import MAX_SCALE
+from symbench.core.training.sizes import MAX_SCALE, MIN_SCALE, scaled_widths
 
 NEAREST_SEARCH = 8  # how far from a refused value the nearest buildable one is looked for
 
@@ -51,9 +52,50 @@ def check_buildable(
             if nearest is not None:
                 raise _refusal(name, value, why, nearest)
         raise SymbenchError(
-            f"--size {', '.join(f'{k}={v}' for k, v in given.items())}: {why}, nor does any "
-            f"value within {NEAREST_SEARCH} of them"
+            f"--size {_keywords(given)}: {why}, nor does any value within {NEAREST_SEARCH} of them"
         )
+
+
+def check_width_scales(entry: ModelEntry, dims: ModelDims, scales: Sequence[float]) -> None:
+    """Refuses a width scale (`symbench tune --width-scales`) outside [MIN_SCALE, MAX_SCALE]
+    or whose network cannot be built, naming it and the nearest scale that builds: a scale
+    of 1000 asked torch for 590 GB mid-search."""
+    for scale in scales:
+        if not MIN_SCALE <= scale <= MAX_SCALE:
+            allowed = min(max(scale, MIN_SCALE), MAX_SCALE)
+            raise SymbenchError(
+                f"--width-scales {scale:g}: a width scale of model {_named(entry)} is in "
+                f"[{MIN_SCALE:g}, {MAX_SCALE}]; the nearest allowed: {allowed:g}"
+            )
+        widths = scaled_widths(entry, scale)
+        why = _why_not(entry, dims, widths)
+        if why is not None:
+            nearest = _nearest_scale(entry, dims, scale)
+            hint = (
+                f"nearest buildable: {nearest:.4g} ({_keywords(scaled_widths(entry, nearest))})"
+                if nearest is not None
+                else f"no scale builds within {NEAREST_SEARCH} steps of its first width"
+            )
+            raise SymbenchError(f"--width-scales {scale:g} ({_keywords(widths)}): {why}; {hint}")
+
+
+def _nearest_scale(entry: ModelEntry, dims: ModelDims, scale: float) -> float | None:
+    """The width scale nearest `scale` whose network builds, in steps of one on the first
+    width (the nearest first, the smaller of two as near), within NEAREST_SEARCH steps and
+    within [MIN_SCALE, MAX_SCALE]; None if there is none."""
+    base = scaled_widths(entry, 1.0)[entry.widths[0]]
+    start = scaled_widths(entry, scale)[entry.widths[0]]
+    steps = sorted(range(-NEAREST_SEARCH, NEAREST_SEARCH + 1), key=lambda d: (abs(d), d))
+    tries = [(start + d) / base for d in steps if d and start + d >= 1]
+    return next(
+        (
+            s
+            for s in tries
+            if MIN_SCALE <= s <= MAX_SCALE
+            and _why_not(entry, dims, scaled_widths(entry, s)) is None
+        ),
+        None,
+    )
 
 
 def _bounds(entry: ModelEntry, name: str) -> tuple[int, int]:
@@ -100,6 +142,10 @@ def _refusal(name: str, value: int, why: str, nearest: int | None) -> SymbenchEr
         else f"no value within {NEAREST_SEARCH} of it builds"
     )
     return SymbenchError(f"--size {name}={value}: {why}; {hint}")
+
+
+def _keywords(values: Mapping[str, int]) -> str:
+    return ", ".join(f"{k}={v}" for k, v in values.items())
 
 
 def _named(entry: ModelEntry) -> str:

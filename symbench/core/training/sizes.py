@@ -20,6 +20,7 @@ from symbench.core.plugin.entries import ModelEntry
 from symbench.core.training.backends import get_backend
 
 MAX_SCALE = 64  # the largest width factor tried when matching a parameter count
+MIN_SCALE = 1e-3  # the smallest width factor `symbench tune` takes (every width is then 1)
 # The relative miss a matched size may have: one step of the first width moves a small graph
 # network's count by about 5 % (gnn at 20 000 parameters misses by 5.1 %), so 10 % leaves
 # every built-in model matchable from a few thousand parameters up.

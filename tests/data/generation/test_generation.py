@@ -5,13 +5,18 @@ from __future__ import annotations
 import json
 import shutil
 
+import numpy as np
+import pyarrow as pa
+import pyarrow.parquet as pq
 import pytest
 from synthetic_raw import fake_simulate
 
 from symbench.core.common.errors import SymbenchError
+from symbench.core.common.hashing import sha256_file
 from symbench.core.data import load_dataset
 from symbench.core.data.generation.generate import generate, record_path
-from symbench.core.data.storage.metadata import dataset_dir
+from symbench.core.data.storage.files import read_columns
+from symbench.core.data.storage.metadata import content_hash, dataset_dir
 from symbench.core.sim.scene.scenario import Scenario
 
 
@@ -110,6 +115,35 @@ def test_a_damaged_file_is_detected_and_regenerating_fixes_it(smoke_hexa, damage
     assert report.n_simulated == 1 and report.content_hash == smoke_hexa.content_hash
     assert path.read_bytes() == data
     load_dataset(smoke_hexa.dataset_id)
+
+
+@pytest.mark.parametrize(
+    ("edit", "problem"),
+    [
+        (
+            lambda c: c.update({"tau.leg1.femur": c["tau.leg1.femur"].astype(str)}),
+            "column 'tau' is not numeric (object)",
+        ),
+        (lambda c: c["q.leg0.coxa"].__setitem__(3, np.nan), "column 'q' has NaN or inf at step 3"),
+        (lambda c: c["contact.leg2"].__setitem__(0, 7), "column 'contact' must hold only 0 and 1"),
+    ],
+    ids=["text", "NaN", "flag"],
+)
+def test_a_trajectory_re_hashed_by_hand_is_used_only_when_it_is_one(smoke_hexa, edit, problem):
+    """Before: a text column whose digest was written into metadata.json ended `data info`
+    in "internal error: TypeError" (found by the property suite); NaN went into training."""
+    path = smoke_hexa.root / "trajectories" / "00002.parquet"
+    columns = {name: column.copy() for name, column in read_columns(path).items()}
+    edit(columns)
+    pq.write_table(pa.table(columns), path)
+    meta_path = smoke_hexa.root / "metadata.json"
+    meta = json.loads(meta_path.read_text())
+    meta["trajectories"][2]["sha256"] = sha256_file(path)
+    meta["content_hash"] = content_hash(meta)
+    meta_path.write_text(json.dumps(meta))
+    with pytest.raises(SymbenchError) as err:
+        load_dataset(smoke_hexa.dataset_id).view("leg_grouped", "acc")
+    assert str(err.value) == f"{path}: {problem}"
 
 
 def test_edited_metadata_and_missing_datasets_are_reported(smoke_hexa):

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import io
 import json
 import zipfile
 
@@ -12,6 +11,7 @@ import pyarrow.parquet as pq
 import pytest
 from cli_invoke import error_line
 from click.testing import CliRunner
+from crafted_npz import claim_rows
 from synthetic_raw import fake_simulate, synthetic_raw
 
 from symbench.core.cli import build_cli
@@ -119,27 +119,46 @@ def test_bad_logs_are_refused_with_a_clear_message(home, tmp_path, case):
     assert not (home / "datasets" / "bad-logs").exists()  # nothing half-imported
 
 
-def test_an_npz_header_claiming_more_rows_than_the_file_holds_is_refused_naming_it(home, tmp_path):
+@pytest.mark.parametrize("suffix", [".npy", ""], ids=["t.npy", "t without its suffix"])
+def test_an_npz_header_claiming_more_rows_than_the_file_holds_is_refused_naming_it(
+    home, tmp_path, suffix
+):
     """Before: "internal error: MemoryError: Unable to allocate 7.28 TiB", the file unnamed:
-    numpy allocates what a header claims before reading."""
+    numpy allocates what a header claims before reading (and np.load reads an entry named
+    without `.npy` as an array too, which the first check of headers passed by)."""
     folder = _write_log(tmp_path / "claims", fmt="npz")
     path = folder / "run.npz"
-    with np.load(path) as npz:
-        arrays = {k: npz[k] for k in npz.files}
-    with zipfile.ZipFile(path, "w") as archive:
-        for name, array in arrays.items():
-            buffer = io.BytesIO()
-            if name == "t":  # 10^12 rows claimed, 20 held
-                header = {"descr": "<f8", "fortran_order": False, "shape": (10**12,)}
-                np.lib.format.write_array_header_1_0(buffer, header)
-                buffer.write(array.tobytes())
-            else:
-                np.lib.format.write_array(buffer, array)
-            archive.writestr(f"{name}.npy", buffer.getvalue())
+    claim_rows(path, "t", 10**12, suffix)  # 20 held
     result = CliRunner().invoke(build_cli(), ["data", "import", str(folder), "--id", "claims"])
     assert error_line(result, 1) == (
         f"Error: {path}: column 't' claims shape (1000000000000,) (8000000000000 bytes), but "
         "the file holds 160 bytes for it: a damaged or crafted header"
+    )
+
+
+def test_an_npz_entry_that_is_no_array_is_refused_naming_it(home, tmp_path):
+    """np.load hands back such an entry whole, as bytes, where a column was expected."""
+    folder = _write_log(tmp_path / "notes", fmt="npz")
+    path = folder / "run.npz"
+    with zipfile.ZipFile(path, "a") as archive:
+        archive.writestr("notes.txt", "taken on the test wall")
+    result = CliRunner().invoke(build_cli(), ["data", "import", str(folder), "--id", "notes"])
+    assert error_line(result, 1) == (
+        f"Error: {path}: not a readable npz file without pickles (entry 'notes.txt' is not a "
+        "numpy array)"
+    )
+
+
+def test_a_parquet_column_name_that_is_no_utf8_is_refused_naming_the_file(home, tmp_path):
+    """Before: "internal error: UnicodeDecodeError" (pyarrow decodes a name only when asked
+    for it); found by the property suite's damaged files."""
+    folder = _write_log(tmp_path / "names")
+    path = folder / "run.parquet"
+    path.write_bytes(path.read_bytes().replace(b"base_pos.x", b"base_pos.\xff"))
+    result = CliRunner().invoke(build_cli(), ["data", "import", str(folder), "--id", "names"])
+    assert error_line(result, 1) == (
+        f"Error: {path}: not a readable Parquet file ('utf-8' codec can't decode byte 0xff in "
+        "position 9: invalid start byte)"
     )
 
 

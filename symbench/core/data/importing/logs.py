@@ -13,9 +13,9 @@ import numpy as np
 from symbench.core.common.errors import SymbenchError
 from symbench.core.data.importing.derive import DERIVABLE, UNKNOWABLE, body_to_world, derivative
 from symbench.core.data.importing.manifest import IMPORT_JSON, ImportManifest
-from symbench.core.data.importing.npz import read_npz
 from symbench.core.data.storage.columns import check_flags, flat_names, legs_in
 from symbench.core.data.storage.files import read_columns
+from symbench.core.data.storage.npz import read_npz
 from symbench.core.sim.raw import COLUMN_NAMES, RAW_COLUMNS, column_shape, validate_raw
 
 PERIOD_TOLERANCE = 0.05  # relative deviation of any time step from record_period_s

@@ -18,7 +18,9 @@ import numpy as np
 
 from symbench.core.common.atomic import write_bytes_atomic
 from symbench.core.common.errors import SymbenchError
-from symbench.core.data.storage.columns import flatten, unflatten
+from symbench.core.common.jsonfile import one_line
+from symbench.core.data.storage.columns import check_flags, flatten, unflatten
+from symbench.core.sim.raw import validate_raw
 
 
 def canonical_json(obj: Any) -> str:
@@ -66,9 +68,10 @@ def read_columns(path: Path) -> dict[str, np.ndarray]:
 
     try:
         table = pq.read_table(path)
-    except (OSError, pa.ArrowException) as exc:
-        raise SymbenchError(f"{path}: not a readable Parquet file ({exc})") from None
-    return {name: table.column(name).to_numpy() for name in table.column_names}
+        # a damaged name is decoded only here (UnicodeDecodeError, a ValueError)
+        return {name: table.column(name).to_numpy() for name in table.column_names}
+    except (OSError, ValueError, pa.ArrowException) as exc:
+        raise SymbenchError(f"{path}: not a readable Parquet file ({one_line(exc)})") from None
 
 
 def step_count(path: Path) -> int:
@@ -79,8 +82,18 @@ def step_count(path: Path) -> int:
     try:
         return pq.read_metadata(path).num_rows
     except (OSError, pa.ArrowException) as exc:
-        raise SymbenchError(f"{path}: not a readable Parquet file ({exc})") from None
+        raise SymbenchError(f"{path}: not a readable Parquet file ({one_line(exc)})") from None
 
 
 def read_trajectory(path: Path, n_legs: int) -> dict[str, np.ndarray]:
-    return unflatten(read_columns(path), n_legs, str(path))
+    """One stored trajectory's raw arrays, checked as the generator checks what it writes
+    (numbers, of the raw schema's shapes, finite, `t` increasing, flags 0 or 1): a file
+    whose digest was written into a dataset's metadata by hand is used only when it is a
+    trajectory, never to fail deep inside a view."""
+    arrays = unflatten(read_columns(path), n_legs, str(path))
+    for name, array in arrays.items():
+        if array.dtype.kind not in "biuf":
+            raise SymbenchError(f"{path}: column '{name}' is not numeric ({array.dtype})")
+    validate_raw(arrays, n_legs, str(path))
+    check_flags(arrays, str(path))
+    return arrays

@@ -11,7 +11,7 @@ import click
 from click.core import ParameterSource
 from rich.table import Table
 
-from symbench.core.common.cli_types import POSITIVE, CommaList
+from symbench.core.common.cli_types import POSITIVE, CommaList, WritableFile
 from symbench.core.common.console import StdoutConsole
 from symbench.core.runs import tune as tuning
 from symbench.core.runs import tune_summary
@@ -115,7 +115,7 @@ def tune(
 @click.argument("folder", type=click.Path(exists=True, file_okay=False, path_type=Path))
 @click.option(
     "--out",
-    type=click.Path(dir_okay=False, path_type=Path),
+    type=WritableFile(),
     default=None,
     help="Also write the Markdown table to this file (e.g. leaderboards/tuning/summary.md).",
 )
