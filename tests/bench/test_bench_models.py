@@ -49,6 +49,7 @@ def test_the_report_of_both_thread_settings():
     result = CliRunner().invoke(build_cli(), args)
     assert result.exit_code == 0, result.output
     report = json.loads(result.stdout)
+    assert report["lockstep_batch"] == 32 * 4  # small's references x its PD fractions
     _each_setting_ran_with_the_threads_it_states(report["settings"])
     for setting in report["settings"]:
         _every_share_divides_by_the_best_matmul_rate_of_its_setting(setting)
@@ -96,6 +97,7 @@ def _latency_is_measured_with_the_fewest_threads_only(settings):
     first, *others = settings
     assert first["latency_measured"]
     assert all(r[f"infer_batch1_us_{r['infer_best']}"] > 0 for r in first["rows"])
+    assert all(r[f"infer_lockstep_us_{r['lockstep_best']}"] > 0 for r in first["rows"])
     for setting in others:
         assert not setting["latency_measured"]
         assert not any(key.startswith("infer") for r in setting["rows"] for key in r)

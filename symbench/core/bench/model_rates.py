@@ -1,5 +1,5 @@
 """The figures of one thread setting of `symbench bench models`, taken in the process that
-`threads.confine` confined: every row (training rate, batch-1 latency, FLOPs) and both
+`threads.confine` confined: every row (training rate, inference latency, FLOPs) and both
 backends' dense-matmul rates, so that each row's share of the best matmul rate compares
 figures computed with the same cores.
 
@@ -18,8 +18,14 @@ from typing import Any
 
 import numpy as np
 
-from symbench.core.bench.flops import MATMUL_SIZE, matmul_flops_per_s, step_flops_per_sample
+from symbench.core.bench.flops import (
+    MATMUL_SIZE,
+    best_rate,
+    matmul_flops_per_s,
+    step_flops_per_sample,
+)
 from symbench.core.bench.threads import XLA_POOL_THREAD, threads_named
+from symbench.core.config.presets import SMALL
 from symbench.core.data.views.model_dims import dims_of
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import BACKENDS
@@ -28,12 +34,18 @@ from symbench.core.training.kernels import TORCH_PINS
 from symbench.core.training.normalization import Normalizer
 
 BATCH = 64
+# the closed loop's call on `small`: every reference at every PD fraction in one batch
+LOCKSTEP = SMALL.closed_loop.references * len(SMALL.closed_loop.pd_fractions)
+CALL_STEPS = 16  # training steps per timed call (gnn in torch: about 0.2 s)
 
 Say = Callable[[str], None]
 
 
 def train_rate(entry, views, compiled: bool, seconds: float) -> float:
-    """Samples per second of the training step at batch 64, after a warm-up epoch."""
+    """Samples per second of the training step at batch 64, estimated as the matmul rate is
+    (`flops.best_rate`: the best of short windows), so that on a machine shared with other
+    work the two are compared alike: a mean over the whole time would count the other work
+    against training only. The first call compiles."""
     data = views[entry.view]
     backend = get_backend(entry.backend)
     dims = dims_of(data)
@@ -41,18 +53,13 @@ def train_rate(entry, views, compiled: bool, seconds: float) -> float:
         entry, dims, {}, backend.init_params(entry, dims, {}, 0), entry.learning_rate, compiled
     )
     trainer.set_data(data.inputs, data.target, data.inputs, data.target)
-    n_batches = len(data) // BATCH
-    order = np.arange(n_batches * BATCH).reshape(n_batches, BATCH)
-    trainer.train_epoch(order)  # compiles
-    done, start = 0, time.perf_counter()
-    while time.perf_counter() - start < seconds:
-        trainer.train_epoch(order)
-        done += n_batches * BATCH
-    return done / (time.perf_counter() - start)
+    order = np.arange(CALL_STEPS * BATCH).reshape(CALL_STEPS, BATCH)
+    return best_rate(lambda: trainer.train_epoch(order), order.size, seconds)
 
 
-def latency_us(entry, views, compiled: bool, seconds: float) -> float:
-    """Median wall time of one batch-1 prediction (normalization included), microseconds."""
+def latency_us(entry, views, compiled: bool, seconds: float, batch: int = 1) -> float:
+    """Median wall time of one prediction of `batch` rows (normalization included),
+    microseconds."""
     data = views[entry.view]
     backend = get_backend(entry.backend)
     dims = dims_of(data)
@@ -65,14 +72,14 @@ def latency_us(entry, views, compiled: bool, seconds: float) -> float:
         np.float32,
         compiled,
     )
-    one = {k: v[:1].astype(np.float32) for k, v in data.inputs.items()}
+    rows = {k: v[:batch].astype(np.float32) for k, v in data.inputs.items()}
     for _ in range(20):
-        predict(one)
+        predict(rows)
     times: list[float] = []
     start = time.perf_counter()
     while time.perf_counter() - start < seconds or len(times) < 50:
         t = time.perf_counter()
-        predict(one)
+        predict(rows)
         times.append(time.perf_counter() - t)
     return 1e6 * statistics.median(times)
 
@@ -80,8 +87,9 @@ def latency_us(entry, views, compiled: bool, seconds: float) -> float:
 def measure(
     entry, views, seconds: float, modes: tuple[bool, ...], latency: bool, say: Say
 ) -> dict[str, Any]:
-    """One row: training rate (and, with `latency`, batch-1 latency) in each mode, and the
-    FLOPs per second of training in its best mode."""
+    """One row: training rate (and, with `latency`, the latency of a batch-1 call and of the
+    closed loop's lockstep call) in each mode, and the FLOPs per second of training in its
+    best mode."""
     row: dict[str, Any] = {"model": entry.name, "backend": entry.backend}
     names = ["compiled" if c else "plain" for c in modes]
     for compiled, mode in zip(modes, names):
@@ -90,9 +98,12 @@ def measure(
         if latency:
             say(f"batch-1 inference, {mode}")
             row[f"infer_batch1_us_{mode}"] = latency_us(entry, views, compiled, seconds)
+            say(f"lockstep inference ({LOCKSTEP} rows), {mode}")
+            row[f"infer_lockstep_us_{mode}"] = latency_us(entry, views, compiled, seconds, LOCKSTEP)
     row["train_best"] = max(names, key=lambda m: row[f"train_samples_per_s_{m}"])
     if latency:
         row["infer_best"] = min(names, key=lambda m: row[f"infer_batch1_us_{m}"])
+        row["lockstep_best"] = min(names, key=lambda m: row[f"infer_lockstep_us_{m}"])
     say("counting FLOPs")
     flops = step_flops_per_sample(entry, dims_of(views[entry.view]), BATCH)
     row["train_flops_per_sample"] = flops
@@ -115,14 +126,18 @@ def measure_setting(job: dict[str, Any], cores: list[int], say: Say) -> dict[str
     matmul: dict[str, float] = {}
     threads: dict[str, int] = {}
     for backend in BACKENDS:
+        # the best of a short window before each row and a whole one after the last: one
+        # window alone can fall into a moment when other work holds the cores
+        rates = []
         for entry in (e for e in entries if e.backend == backend):
+            rates.append(matmul_flops_per_s(backend, job["seconds"] / 4))
             both = job["modes"] == "both"
             modes = (False, True) if both else (get_backend(backend).default_compiled,)
             prefix = f"[{len(rows) + 1}/{len(entries)}] {entry.name}/{backend}"
             say_row = _timed(say, prefix, started)
             rows.append(measure(entry, views, job["seconds"], modes, job["latency"], say_row))
         say(f"{backend}: dense matmul rate ({MATMUL_SIZE}x{MATMUL_SIZE}, float32)")
-        matmul[backend] = matmul_flops_per_s(backend, job["seconds"])
+        matmul[backend] = max([*rates, matmul_flops_per_s(backend, job["seconds"])])
         threads[backend] = _threads_used(backend)
     best = max(matmul, key=matmul.__getitem__)
     for row in rows:

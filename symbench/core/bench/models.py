@@ -1,5 +1,6 @@
 """`symbench bench models`: training throughput (batch 64), how close it comes to the CPU's
-matmul limit, and batch-1 inference latency, per thread setting.
+matmul limit, and inference latency (batch 1, and the closed loop's lockstep batch of every
+reference at every PD fraction on `small`), per thread setting.
 
 Every model in both backends, on synthetic data shaped like the robot's, in each backend's
 default mode, or (`--modes both`) uncompiled and compiled side by side (torch.compile; JAX:
@@ -9,9 +10,9 @@ inference), so the table shows which wins.
 The limit is one honest denominator per thread setting: the best dense-matmul rate either
 backend reaches with that setting's cores, measured in the same process as the rows (see
 `models_worker`). One thread is how a sweep runs each job, all cores how `symbench run`
-trains. Batch-1 latency is measured in the setting with the fewest threads only: a batch-1
-call's matrices are far too small to split among threads, so a second figure would cost a
-timing window per row and mode and say nothing new.
+trains. Latency is measured in the setting with the fewest threads only: a batch-1 call's
+matrices are far too small to split among threads, so a second figure would cost a timing
+window per row and mode and say nothing new.
 """
 
 from __future__ import annotations
@@ -25,7 +26,7 @@ import click
 from rich.console import Group
 from rich.table import Table
 
-from symbench.core.bench.model_rates import BATCH
+from symbench.core.bench.model_rates import BATCH, LOCKSTEP
 from symbench.core.bench.models_worker import measure_in_child
 from symbench.core.bench.threads import ThreadCounts
 from symbench.core.common.cli_types import POSITIVE
@@ -108,6 +109,7 @@ def bench_models(
     report = {
         "robot": robot_name,
         "batch": BATCH,
+        "lockstep_batch": LOCKSTEP,
         "cpu_count": os.cpu_count(),
         "seconds_per_figure": seconds,
         "seconds_total": round(time.perf_counter() - started, 1),
@@ -134,6 +136,7 @@ def _table(robot: str, setting: dict[str, Any]) -> Table:
     columns = ["model", "backend", *(f"train/s {m}" for m in modes)]
     columns += ["GFLOP/sample", "of best matmul"]
     columns += [f"infer us {m}" for m in modes] if latency else []
+    columns += [f"lockstep us {m}" for m in modes] if latency else []
     for col in columns:
         table.add_column(col, justify="right")
     for r in rows:
@@ -144,7 +147,9 @@ def _table(robot: str, setting: dict[str, Any]) -> Table:
         cells += [f"{r['train_flops_per_sample'] / 1e9:.2e}", f"{r['share_of_best_matmul']:.1%}"]
         if latency:
             cells += [
-                _figure(r, f"infer_batch1_us_{m}", "{:.1f}", r["infer_best"] == m) for m in modes
+                _figure(r, f"infer_{size}_us_{m}", "{:.1f}", r[best] == m)
+                for size, best in (("batch1", "infer_best"), ("lockstep", "lockstep_best"))
+                for m in modes
             ]
         table.add_row(*cells)
     return table

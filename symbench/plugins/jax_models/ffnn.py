@@ -7,7 +7,7 @@ import jax.numpy as jnp
 
 from symbench.plugins.architectures import FFNN as DEFAULTS
 from symbench.plugins.architectures import builder
-from symbench.plugins.jax_models.layers import Dense, LatentMLP
+from symbench.plugins.jax_models.layers import Dense, LatentMLP, features_first
 
 
 class FFNN(nn.Module):
@@ -17,8 +17,9 @@ class FFNN(nn.Module):
 
     @nn.compact
     def __call__(self, x: jnp.ndarray) -> jnp.ndarray:
-        h = LatentMLP(self.width, self.layers, name="body")(x.reshape(x.shape[0], -1))
-        return Dense(3 * self.n_legs, name="out")(h).reshape(-1, self.n_legs, 3)
+        # feature-major inside (layers.Dense): (feature, batch)
+        h = LatentMLP(self.width, self.layers, name="body")(features_first(x.reshape(len(x), -1)))
+        return features_first(Dense(3 * self.n_legs, name="out")(h)).reshape(-1, self.n_legs, 3)
 
 
 build = builder(DEFAULTS, lambda dims, s: FFNN(dims.n_legs, s.width, s.layers))

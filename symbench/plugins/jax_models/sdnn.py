@@ -12,7 +12,12 @@ import jax.numpy as jnp
 
 from symbench.plugins.architectures import SDNN as DEFAULTS
 from symbench.plugins.architectures import as_tuples, builder, check_ring, mirror_signs
-from symbench.plugins.jax_models.layers import Dense, LatentMLP, mirror_average
+from symbench.plugins.jax_models.layers import (
+    Dense,
+    LatentMLP,
+    features_first,
+    mirror_average,
+)
 
 
 class SDNN(nn.Module):
@@ -29,14 +34,15 @@ class SDNN(nn.Module):
     def equivariant(self, x: jnp.ndarray) -> jnp.ndarray:
         """The network itself: equivariant to every permutation of legs (with `ring`, to
         the cyclic shifts only)."""
-        h = LatentMLP(self.latent, self.mlp_layers, name="enc")(x)
+        # feature-major inside (layers.Dense): (feature, leg, batch)
+        h = LatentMLP(self.latent, self.mlp_layers, name="enc")(features_first(x))
         for k in range(self.steps):
             seen = [h, h.sum(axis=1, keepdims=True)]  # the sum: once per robot, not per leg
             if self.ring:
                 seen += [jnp.roll(h, -1, axis=1), jnp.roll(h, 1, axis=1)]
             h = h + LatentMLP(self.latent, self.mlp_layers, name=f"proc{k}")(*seen)
         h = LatentMLP(self.latent, self.mlp_layers, name="dec")(h)
-        return Dense(3, name="out")(h)
+        return features_first(Dense(3, name="out")(h))
 
 
 build = builder(

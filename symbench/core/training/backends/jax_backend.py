@@ -11,16 +11,17 @@ jitted scan per epoch, ran at the same rate both ways, measured alternately side
 (sdnn 13.9-16.5k samples/s, before the change below). The setting takes effect when JAX
 creates its CPU client, i.e. when this module is imported before any JAX computation.
 
-Where a training step's time went (XLA profile, hexa, batch 64): the kernels' gradients,
-dots over the batch axis that XLA ran in Eigen at a third of YNNPACK's speed, 45 % of sdnn's
-step and a third of gnn's; jax_models/layers.py's `Dense` now hands them to YNNPACK, and
-multiplies concatenated inputs part by part (sdnn's leg sum once per sample). Measured side
-by side in one process on one core (median of 25 alternating epochs): ffnn 76k -> 88k
-samples/s, ffnn-leg 72k -> 81k, gnn 3.4k -> 3.8k, sdgnn 21k -> 23k, sdnn 8.8k -> 13.2k.
-A batch-1 sdnn prediction stays at ~39 us although its computation fell from ~33 to ~19 us
-(200 forwards in one lax.map): a call to an executable with a YNNPACK dot costs ~19 us
-before any work (one 6x128x128 dot: 21 us per call, 2.3 us in a loop; a trivial jitted
-function 7 us), and routing the dots elsewhere (Eigen) was slower (45 vs 33 us).
+Where a training step's time went (XLA profile, hexa, batch 64), and what changed it, each
+measured side by side on one core in samples per CPU second: the kernels' gradients, dots
+over the batch axis that XLA ran in Eigen at a third of YNNPACK's speed (45 % of sdnn's
+step), go to YNNPACK; the transposed copies that took (13 % of sdnn's step, 15 % of the
+graph networks') are gone with the models' feature-major layout (jax_models/layers.py's
+`Dense`); Adam's loops over a graph network's many small arrays run over one vector
+(`JaxTrainer`). Version 3 against version 2: ffnn 76.5k -> 79k, ffnn-leg 72k -> 75k,
+sdgnn 28k -> 40k, sdnn 17.1k -> 17.6k, gnn 4.5k -> 6.7k. A batch-1 sdnn prediction costs
+about 7 us to call any jitted function and some 45 us to run its 11 small dots (YNNPACK:
+about 4 us each before any work; Eigen was slower) and some 40 tiny loops, on the shared
+2-core machine; no XLA option tried (other dot libraries, fusion settings) made it faster.
 """
 
 from __future__ import annotations
@@ -29,7 +30,7 @@ import contextlib
 import os
 from collections.abc import Callable
 from functools import partial
-from typing import Any
+from typing import Any, NamedTuple
 
 import flax.linen as nn
 import jax
@@ -48,6 +49,7 @@ if "JAX_CPU_ENABLE_ASYNC_DISPATCH" not in os.environ:
 
 Params = dict[str, np.ndarray]
 EVAL_CHUNK = 8192
+RAVEL_BELOW = 16384  # elements: smaller parameter arrays share one vector in Adam
 
 
 def build_module(entry: ModelEntry, dims: ModelDims, hyper: dict[str, Any]) -> nn.Module:
@@ -101,7 +103,50 @@ def _x64(dtype: Any) -> contextlib.AbstractContextManager:
     return jax.enable_x64(True) if np.dtype(dtype) == np.float64 else contextlib.nullcontext()
 
 
+class Trainable(NamedTuple):
+    """The parameters as Adam sees them: arrays of `RAVEL_BELOW` elements or more as they
+    are, the smaller ones raveled into one vector (see `JaxTrainer`)."""
+
+    arrays: dict[str, jax.Array]
+    vector: jax.Array
+
+
+class Raveling:
+    """Which parameter arrays `Trainable.vector` holds, in which order and shape, and the
+    conversions: on the host with numpy (a jitted or eager JAX conversion would compile for
+    every array shape, seconds a training), traced inside the jitted step."""
+
+    def __init__(self, shapes: dict[str, tuple[int, ...]]):
+        self.shapes = {k: shapes[k] for k in sorted(shapes) if np.prod(shapes[k]) < RAVEL_BELOW}
+        self.bounds = np.cumsum([int(np.prod(s)) for s in self.shapes.values()])[:-1].tolist()
+
+    def trainable(self, flat: Params) -> Trainable:
+        arrays = {k: jnp.asarray(v, jnp.float32) for k, v in flat.items() if k not in self.shapes}
+        parts = [np.asarray(flat[k], np.float32).ravel() for k in self.shapes]
+        return Trainable(arrays, jnp.asarray(np.concatenate([np.zeros(0, np.float32), *parts])))
+
+    def flat(self, p: Trainable) -> Params:
+        """The arrays by name, as numpy copies."""
+        parts = np.split(np.array(p.vector), self.bounds) if self.shapes else []
+        small = {k: a.reshape(s) for (k, s), a in zip(self.shapes.items(), parts, strict=True)}
+        return {**{k: np.array(v) for k, v in p.arrays.items()}, **small}
+
+    def tree(self, p: Trainable) -> dict:
+        """The network's nested parameters, inside a jitted function."""
+        parts = jnp.split(p.vector, self.bounds) if self.shapes else []
+        small = {k: a.reshape(s) for (k, s), a in zip(self.shapes.items(), parts, strict=True)}
+        return traverse_util.unflatten_dict({**p.arrays, **small}, sep="/")
+
+
 class JaxTrainer:
+    """Adam on the small parameter arrays raveled into one vector (`Trainable`): XLA runs
+    Adam's update as a few loops per array, each costing microseconds before any work, and
+    a graph network has 116 arrays (sdgnn 56), most of them biases, norms and kernels of
+    16 x 16 (measured: gnn +10 %, sdgnn +14 % samples per second); large kernels stay
+    arrays, whose copy out of a vector would cost more than their loops (ffnn -12 % with
+    every array raveled). Checkpoints keep the per-array layout (`params`,
+    `optimizer_state`)."""
+
     def __init__(
         self,
         net: nn.Module,
@@ -112,11 +157,14 @@ class JaxTrainer:
     ):
         self.to_tree = to_tree
         self.tx = optax.adam(learning_rate)  # each step's update then times its rate scale
-        tree = to_tree(params)
-        self.state = (tree, self.tx.init(tree))
+        self.raveling = Raveling({k: np.shape(v) for k, v in params.items()})
+        trainable = self._trainable(params)
+        self.state = (trainable, self.tx.init(trainable))
+        tree = self.raveling.tree
 
         def loss_fn(p, inputs, target):
-            return jnp.mean((net.apply({"params": p}, **inputs) - target) ** 2)
+            out = net.apply({"params": tree(p)}, **inputs)
+            return jnp.mean((out - target) ** 2)
 
         def step(state, idx_scale, inputs, target):
             (p, opt_state), (idx, scale) = state, idx_scale
@@ -133,12 +181,18 @@ class JaxTrainer:
             return state, losses.mean()
 
         def sse(p, inputs, target, idx, weight):
-            err = net.apply({"params": p}, **{k: v[idx] for k, v in inputs.items()}) - target[idx]
+            batch = {k: v[idx] for k, v in inputs.items()}
+            err = net.apply({"params": tree(p)}, **batch) - target[idx]
             return jnp.sum(weight[:, None, None] * err.astype(jnp.float32) ** 2)
 
         self._epoch = jax.jit(epoch, donate_argnums=0) if compiled else None
         self._step = jax.jit(step, donate_argnums=0)
         self._sse = jax.jit(sse)
+
+    def _trainable(self, params: Params) -> Trainable:
+        """`params` checked against the network (names, shapes), as Adam sees them."""
+        self.to_tree(params)
+        return self.raveling.trainable(params)
 
     def set_data(self, train_inputs, train_target, val_inputs, val_target) -> None:
         def arrays(d):
@@ -173,19 +227,45 @@ class JaxTrainer:
         return total / target.size
 
     def params(self) -> Params:
-        return flatten(self.state[0])
+        return self.raveling.flat(self.state[0])
 
     def load_params(self, params: Params) -> None:
-        self.state = (self.to_tree(params), self.state[1])
+        self.state = (self._trainable(params), self.state[1])
+
+    def _per_array(self, opt_state: Any) -> Any:
+        """Adam's state with each `Trainable` (its moments) as the network's nested arrays
+        (numpy): the layout of checkpoints."""
+        return jax.tree_util.tree_map(
+            lambda x: (
+                traverse_util.unflatten_dict(self.raveling.flat(x), sep="/")
+                if isinstance(x, Trainable)
+                else x
+            ),
+            opt_state,
+            is_leaf=lambda x: isinstance(x, Trainable),
+        )
 
     def optimizer_state(self) -> Params:
-        leaves = jax.tree_util.tree_flatten_with_path(self.state[1])[0]
+        leaves = jax.tree_util.tree_flatten_with_path(self._per_array(self.state[1]))[0]
         return {jax.tree_util.keystr(path): np.array(v) for path, v in leaves}
 
     def load_optimizer_state(self, state: Params) -> None:
-        paths, treedef = jax.tree_util.tree_flatten_with_path(self.state[1])
-        leaves = [jnp.asarray(state[jax.tree_util.keystr(path)]) for path, _ in paths]
-        self.state = (self.state[0], jax.tree_util.tree_unflatten(treedef, leaves))
+        paths, treedef = jax.tree_util.tree_flatten_with_path(self._per_array(self.state[1]))
+        leaves = [np.asarray(state[jax.tree_util.keystr(path)]) for path, _ in paths]
+        per_array = jax.tree_util.tree_unflatten(treedef, leaves)
+        self.state = (
+            self.state[0],
+            jax.tree_util.tree_map(
+                lambda own, arrays: (
+                    self.raveling.trainable(traverse_util.flatten_dict(arrays, sep="/"))
+                    if isinstance(own, Trainable)
+                    else jnp.asarray(arrays)
+                ),
+                self.state[1],
+                per_array,
+                is_leaf=lambda x: isinstance(x, Trainable),
+            ),
+        )
 
 
 class JaxBackend:
