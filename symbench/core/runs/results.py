@@ -202,15 +202,16 @@ class RecordV1(_Strict):
     versions: dict[str, str]
     git_commit: str
 
-    def key(self) -> str:
-        """The run's key (`run_key`), safe as a file name: one record per key."""
+    def key(self, split: str | None = None, variant: str | None = None) -> str:
+        """The run's key (`run_key`), safe as a file name: one record per key. With `split`
+        (and `variant`): the key of the run that trains on them as its own (`RunSpec.key`)."""
         m, d = self.model, self.dataset
         return run_key(
             d.id,
             d.preset,
-            self.split,
+            split or self.split,
             m.name,
-            m.variant,
+            variant or m.variant,
             m.backend,
             self.protocol(),
             self.seed,

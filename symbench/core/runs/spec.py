@@ -74,15 +74,16 @@ class RunSpec:
         """The data the run trains on: `dataset`, else the standard dataset of the preset."""
         return self.dataset if self.dataset is not None else dataset_id(self.robot, self.preset)
 
-    def key(self) -> str:
-        """Matches `ResultRecord.key()`: the variant is resolved from the registry."""
-        variant = model_entry(self).variant
+    def key(self, split: str | None = None, variant: str | None = None) -> str:
+        """Matches `ResultRecord.key()`: the variant is resolved from the registry. With
+        `split` (and `variant`): the key of the run that trains on them as its own, whose
+        checkpoint folder this run's retraining on them shares (`checkpoint_root`)."""
         return run_key(
             self.dataset_id,
             self.preset,
-            self.split,
+            split or self.split,
             self.model,
-            variant,
+            variant or model_entry(self).variant,
             self.backend,
             self.protocol,
             self.seed,
@@ -97,7 +98,14 @@ class RunSpec:
 def checkpoint_root(output: Path, key: str, content_hash: str) -> Path:
     """Where a run keeps its checkpoints: per run key and dataset version (its content hash),
     so a regenerated dataset trains afresh instead of resuming; a retraining on another
-    dataset lies under `<dataset id>-<hash>/`, each training in `<split>__<variant>/`."""
+    dataset lies under `<dataset id>-<hash>/`, each training in `<split>__<variant>/`.
+
+    A retraining on another split (or variant) of the run's own dataset lies under the key
+    of the run that trains it as its own (`RunSpec.key(split, variant)`): the same seed,
+    configuration and data make the same network bit for bit, so the runs of one output
+    folder share it and a sweep trains it once (the `generalization` evaluator's three
+    splits, `generalization-gap`'s control), whichever run asks first. On another dataset
+    the run's own test climbs are left out, so that training stays the run's."""
     return Path(output) / "checkpoints" / key / content_hash[:12]
 
 

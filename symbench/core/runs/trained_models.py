@@ -61,9 +61,11 @@ def trained_model(
     from symbench.core.training.resume import BEST_DIR
     from symbench.core.training.trained_model import TENSORS
 
-    run = checkpoint_root(output, record.key(), record.dataset.content_hash)
-    # retrained on another dataset it lies in that dataset's folder
+    # retrained on another dataset it lies in that dataset's folder under the run's key; on
+    # another split of the run's own, under the key of the run that trains it as its own
     on = f"{dataset}-*/" if dataset is not None and dataset != record.dataset.id else ""
+    key = record.key() if on else record.key(split, variant)
+    run = checkpoint_root(output, key, record.dataset.content_hash)
     pattern = f"{on}{split}__{variant}"
     found = sorted(f / BEST_DIR for f in run.glob(pattern) if (f / BEST_DIR / TENSORS).is_file())
     if len(found) != 1:

@@ -10,6 +10,7 @@ from dataclasses import dataclass, field, replace
 from typing import Any, TypeVar
 
 import numpy as np
+from filelock import FileLock
 
 from symbench.core.common.arrays import ViewArrays
 from symbench.core.common.processes import run_each
@@ -68,7 +69,10 @@ def fit(
         parts = dataset.split_indices(job.split, spec.seed)
         if sets is None:
             sets = dataset.split_views(entry.view, job.variant, job.split, spec.seed)
-        folder = root / f"{job.split}__{job.variant}"
+        shared = checkpoint_root(
+            spec.output, spec.key(job.split, job.variant), dataset.content_hash
+        )
+        folder = shared / f"{job.split}__{job.variant}"
     else:
         other = ensure_dataset(replace(spec, dataset=job.dataset))
         held_out = dataset.split_indices(spec.split, spec.seed).test
@@ -78,7 +82,11 @@ def fit(
         train_set, val_set, test_set = (arrays.take(np.isin(arrays.trajectory, i)) for i in ids)
         sets = (train_set, val_set, test_set)
         folder = root / f"{other.id}-{other.content_hash[:12]}" / f"{job.split}__{job.variant}"
-    model = train(entry, sets[0], sets[1], train_config(spec), checkpoint_dir=folder)
+    folder.parent.mkdir(parents=True, exist_ok=True)
+    # runs in parallel may ask for the same shared training: one trains, the other then
+    # finds it finished and loads it
+    with FileLock(folder.parent / f"{folder.name}.lock"):
+        model = train(entry, sets[0], sets[1], train_config(spec), checkpoint_dir=folder)
     return model, parts, sets, other
 
 
