@@ -42,6 +42,7 @@ def test_both_backends_count_nearly_the_same_flops(name):
     assert by_torch > 0 and abs(by_jax - by_torch) / by_torch < 0.1
 
 
+@pytest.mark.slow  # minutes on 2 cores: kept out of the default suite's 10
 def test_the_report_of_both_thread_settings():
     """One short run (each setting a child process; one model, so it stays short), checked
     for every property the report promises."""

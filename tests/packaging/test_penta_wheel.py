@@ -56,6 +56,7 @@ def test_the_plugin_passes_its_own_tests(penta):
     assert "3 passed" in result.stdout
 
 
+@pytest.mark.slow  # minutes on 2 cores: kept out of the default suite's 10
 def test_sim_check_verifies_the_climb_and_the_d5_symmetry(penta):
     """The declared C5 rotation and the mirror the geometry has (D5), both simulated."""
     report = json.loads(
@@ -69,6 +70,7 @@ def test_sim_check_verifies_the_climb_and_the_d5_symmetry(penta):
     assert all(g["error"] < 1e-9 for g in symmetry["generators"])
 
 
+@pytest.mark.slow  # minutes on 2 cores: kept out of the default suite's 10
 def test_a_smoke_dataset_and_a_smoke_run(penta):
     generated = penta.symbench(
         "data", "generate", "--robot", "penta", "--preset", "smoke", "--no-progress", timeout=600

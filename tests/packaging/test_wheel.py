@@ -77,6 +77,7 @@ def test_the_installed_wheel_lists_the_built_in_robots(installed):
         assert files_under(spec_dir) == files_under(ROBOTS / robot["name"])
 
 
+@pytest.mark.slow  # minutes on 2 cores: kept out of the default suite's 10
 @pytest.mark.parametrize("robot", BUILT_IN)
 def test_the_installed_wheel_simulates(installed, robot):
     """Builds the robot's MuJoCo model from the installed spec and steps the controller."""

@@ -71,6 +71,7 @@ def test_interrupted_sweep_resumes_without_redoing_work(smoke_home, tmp_path):
     assert sweep(specs, report=messages.append) == []  # a finished sweep does nothing
 
 
+@pytest.mark.slow  # minutes on 2 cores: kept out of the default suite's 10
 def test_sweep_on_a_local_ray_cluster(smoke_home, tmp_path):
     import ray
 
