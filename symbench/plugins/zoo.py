@@ -12,7 +12,9 @@ and the graph networks' concatenations multiplied block by block); torch's ffnn 
 train bit for bit as before (a TorchScript trace of the same operations) and stay at 1.
 JAX 3: every model feature-major inside (LayerNorm sums over another axis, the graph
 networks gather and sum by index instead of by matrix products, Adam updates the small
-arrays as one vector); torch's training is bit for bit that of version 2 (1 for ffnn).
+arrays as one vector), and a call of at most 32 rows (legs or edges times samples: a
+control loop's batch-1 call) multiplies row-major, which rounds its predictions differently;
+torch's training is bit for bit that of version 2 (1 for ffnn).
 """
 
 from __future__ import annotations

@@ -18,10 +18,13 @@ step), go to YNNPACK; the transposed copies that took (13 % of sdnn's step, 15 %
 graph networks') are gone with the models' feature-major layout (jax_models/layers.py's
 `Dense`); Adam's loops over a graph network's many small arrays run over one vector
 (`JaxTrainer`). Version 3 against version 2: ffnn 76.5k -> 79k, ffnn-leg 72k -> 75k,
-sdgnn 28k -> 40k, sdnn 17.1k -> 17.6k, gnn 4.5k -> 6.7k. A batch-1 sdnn prediction costs
-about 7 us to call any jitted function and some 45 us to run its 11 small dots (YNNPACK:
-about 4 us each before any work; Eigen was slower) and some 40 tiny loops, on the shared
-2-core machine; no XLA option tried (other dot libraries, fusion settings) made it faster.
+sdgnn 28k -> 40k, sdnn 17.1k -> 17.6k, gnn 4.5k -> 6.7k. A batch-1 sdnn prediction (shared
+2-core machine, loaded) costs about 5 us to call any jitted function, 2 to hand it numpy
+inputs, 3 to fetch its output as float64 and some 33 us to run its 9 small dots (YNNPACK,
+about 2 us each row-major since `layers._project`'s few-rows form, 4 before) and 2
+matrix-vector products (Eigen) and some 36 tiny loops; no XLA option tried (Eigen, XNNPACK
+or oneDNN dots; YNNPACK fusion types dot, eltwise and reduce and XNNPACK graph fusion, which
+formed no other fusions here) made it faster.
 """
 
 from __future__ import annotations
