@@ -63,7 +63,6 @@ def fit(
     validation (same grid: same ids). `sets`: the views of a split of the run's own dataset,
     when already made."""
     entry = replace(model_entry(spec), variant=job.variant)
-    root = checkpoint_root(spec.output, spec.key(), dataset.content_hash)
     other = dataset
     if job.dataset is None or job.dataset == dataset.id:
         parts = dataset.split_indices(job.split, spec.seed)
@@ -81,6 +80,7 @@ def fit(
         arrays = other.view(entry.view, job.variant)
         train_set, val_set, test_set = (arrays.take(np.isin(arrays.trajectory, i)) for i in ids)
         sets = (train_set, val_set, test_set)
+        root = checkpoint_root(spec.output, spec.key(), dataset.content_hash)
         folder = root / f"{other.id}-{other.content_hash[:12]}" / f"{job.split}__{job.variant}"
     folder.parent.mkdir(parents=True, exist_ok=True)
     # runs in parallel may ask for the same shared training: one trains, the other then
