@@ -20,7 +20,12 @@ from playwright.sync_api import sync_playwright
 ROOT = Path(__file__).resolve().parents[2]
 SITE = ROOT / "leaderboards" / "site"
 IMAGES = ROOT / "docs" / "images"
-ENTRY = "entries/hexa-climb-small-v6__converge__iid__sdnn__acc__torch.html"
+# hexa's sdnn on iid, on whichever dataset version the board is on (the newest if several)
+ENTRY = (
+    sorted(SITE.glob("entries/hexa-climb-small-v*__converge__iid__sdnn__acc__torch.html"))[-1]
+    .relative_to(SITE)
+    .as_posix()
+)
 SHOTS = {  # file -> (page, viewport width)
     "site-overview.png": ("index.html", 1400),
     "site-overview-420px.png": ("index.html", 420),

@@ -127,7 +127,7 @@ def test_foreign_schema_version_and_garbage(valid_record, tmp_path):
 
 
 def test_a_published_record_from_before_robot_plugin_still_reads_and_verifies():
-    root = Path(__file__).resolve().parents[2] / "leaderboards" / "records"
+    root = Path(__file__).resolve().parents[2] / "leaderboards/archive/small-v6-superseded/records"
     path = min(root.glob("*.json"))
     assert "robot_plugin" not in json.loads(path.read_text())
     assert read_record(path).robot_plugin is None  # and its seal still matches

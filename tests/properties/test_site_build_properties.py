@@ -18,7 +18,7 @@ from strategies import FILE_BYTES, edited
 
 from symbench.core.runs.results import seal_of
 
-RECORDS = Path(__file__).parents[2] / "leaderboards" / "records"
+RECORDS = Path(__file__).parents[2] / "leaderboards/archive/small-v6-superseded/records"
 GENUINE = sorted(
     RECORDS.glob("hexa-climb-small-v6__small__iid__sd*nn__acc__torch__converge__seed*.json")
 )
