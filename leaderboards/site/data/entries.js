@@ -208,7 +208,7 @@ window.SYMBENCH_ENTRIES = {
   "metrics": [
    [
     "rank",
-    "4",
+    "4-5",
     "lower"
    ],
    [
@@ -402,6 +402,107 @@ window.SYMBENCH_ENTRIES = {
   "robot": "hexa",
   "split": "iid",
   "title": "ffnn (acc, torch), matched at 100 000 parameters"
+ },
+ "hexa-climb-small-v7__converge__iid__gnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-small-v7.html#converge--iid",
+  "dataset": "hexa-climb-small-v7",
+  "entry": "entries/hexa-climb-small-v7__converge__iid__gnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "4-5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.211 [0.205, 0.218]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.227 [0.190, 0.265]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.305 [0.259, 0.349]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.269 [0.263, 0.278]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.980 [0.641, 1.324]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.60 [1.44, 1.74]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "0.786 [0.708, 0.861]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0689 [0.0640, 0.0729]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.009",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "17.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "hexa",
+  "split": "iid",
+  "title": "gnn (acc, torch)"
  },
  "hexa-climb-small-v7__converge__iid__gnn__acc__torch__matched-100000": {
   "board": "boards/hexa__hexa-climb-small-v7.html#converge--matched-100000--iid",
