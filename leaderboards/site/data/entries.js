@@ -1008,5 +1008,1015 @@ window.SYMBENCH_ENTRIES = {
   "robot": "hexa",
   "split": "iid",
   "title": "sdnn (acc, torch), matched at 100 000 parameters"
+ },
+ "hexa-climb-small-v7__converge__unseen-rotation__ffnn-leg__acc__torch": {
+  "board": "boards/hexa__hexa-climb-small-v7.html#converge--unseen-rotation",
+  "dataset": "hexa-climb-small-v7",
+  "entry": "entries/hexa-climb-small-v7__converge__unseen-rotation__ffnn-leg__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "4",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.833 [0.803, 0.858]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.0966 [0.0866, 0.1060]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.161 [0.144, 0.175]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "1.07 [1.02, 1.10]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.68 [1.60, 1.75]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "0.533 [0.502, 0.556]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0988 [0.0955, 0.1013]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "172 306",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "8 000 [6 400, 9 600]",
+    ""
+   ],
+   [
+    "epochs",
+    "54.4 [43.4, 65.4]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 2, patience 3",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "hexa",
+  "split": "unseen-rotation",
+  "title": "ffnn-leg (acc, torch)"
+ },
+ "hexa-climb-small-v7__converge__unseen-rotation__ffnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-small-v7.html#converge--unseen-rotation",
+  "dataset": "hexa-climb-small-v7",
+  "entry": "entries/hexa-climb-small-v7__converge__unseen-rotation__ffnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.995 [0.971, 1.019]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.0465 [0.0421, 0.0513]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.0855 [0.0742, 0.0995]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "1.27 [1.24, 1.31]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.70 [1.64, 1.73]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.30 [1.24, 1.39]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "0.400 [0.380, 0.423]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.101 [0.098, 0.105]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "157 970",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.027",
+    ""
+   ],
+   [
+    "steps",
+    "7 800 [6 100, 9 500]",
+    ""
+   ],
+   [
+    "epochs",
+    "53.2 [41.6, 64.8]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 1, patience 4",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "hexa",
+  "split": "unseen-rotation",
+  "title": "ffnn (acc, torch)"
+ },
+ "hexa-climb-small-v7__converge__unseen-rotation__gnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-small-v7.html#converge--unseen-rotation",
+  "dataset": "hexa-climb-small-v7",
+  "entry": "entries/hexa-climb-small-v7__converge__unseen-rotation__gnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "3",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.529 [0.512, 0.546]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.135 [0.118, 0.156]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.217 [0.185, 0.263]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.677 [0.653, 0.701]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.37 [1.28, 1.47]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.44 [1.34, 1.52]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "0.631 [0.573, 0.710]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0861 [0.0807, 0.0913]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.009",
+    ""
+   ],
+   [
+    "steps",
+    "8 700 [7 300, 9 800]",
+    ""
+   ],
+   [
+    "epochs",
+    "59.4 [49.8, 66.8]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 2, patience 3",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "hexa",
+  "split": "unseen-rotation",
+  "title": "gnn (acc, torch)"
+ },
+ "hexa-climb-small-v7__converge__unseen-rotation__sdgnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-small-v7.html#converge--unseen-rotation",
+  "dataset": "hexa-climb-small-v7",
+  "entry": "entries/hexa-climb-small-v7__converge__unseen-rotation__sdgnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0919 [0.0882, 0.0953]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.482 [0.467, 0.491]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.560 [0.535, 0.576]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.118 [0.113, 0.122]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "3.94 × 10⁻⁷ [3.66 × 10⁻⁷, 4.14 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0.225 [0.188, 0.250]",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "1.23 [1.19, 1.26]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0383 [0.0357, 0.0408]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "68.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "hexa",
+  "split": "unseen-rotation",
+  "title": "sdgnn (acc, torch)"
+ },
+ "hexa-climb-small-v7__converge__unseen-rotation__sdnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-small-v7.html#converge--unseen-rotation",
+  "dataset": "hexa-climb-small-v7",
+  "entry": "entries/hexa-climb-small-v7__converge__unseen-rotation__sdnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "1",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0762 [0.0726, 0.0793]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.510 [0.477, 0.546]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.593 [0.545, 0.645]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0975 [0.0926, 0.1017]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "4.02 × 10⁻⁷ [3.40 × 10⁻⁷, 4.66 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0.244 [0.181, 0.294]",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "1.29 [1.20, 1.38]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0370 [0.0342, 0.0399]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0135",
+    ""
+   ],
+   [
+    "steps",
+    "9 500 [8 500, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "64.6 [57.8, 68.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 4, patience 1",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "hexa",
+  "split": "unseen-rotation",
+  "title": "sdnn (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__iid__ffnn-leg__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--iid",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__iid__ffnn-leg__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "3",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0776 [0.0742, 0.0809]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.506 [0.495, 0.517]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.581 [0.569, 0.592]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.134 [0.129, 0.139]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.743 [0.655, 0.844]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0.263 [0.250, 0.275]",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "1.32 [1.30, 1.34]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0394 [0.0367, 0.0420]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "192 283",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "17.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "iid",
+  "title": "ffnn-leg (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__iid__ffnn__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--iid",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__iid__ffnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.193 [0.180, 0.205]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.367 [0.355, 0.377]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.489 [0.453, 0.527]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.333 [0.312, 0.352]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.948 [0.872, 1.002]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.12 [1.01, 1.22]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0.113 [0.069, 0.169]",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "1.17 [1.11, 1.23]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0624 [0.0576, 0.0680]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "168 731",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.081",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "17.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 4, patience 1",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "iid",
+  "title": "ffnn (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__iid__gnn__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--iid",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__iid__gnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "4",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.128 [0.115, 0.147]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.406 [0.376, 0.431]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.553 [0.519, 0.579]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.222 [0.198, 0.252]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.553 [0.518, 0.604]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.33 [1.22, 1.44]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0.175 [0.119, 0.212]",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "1.27 [1.21, 1.31]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0684 [0.0641, 0.0728]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "17.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "iid",
+  "title": "gnn (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__iid__sdgnn__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--iid",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__iid__sdgnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0282 [0.0270, 0.0295]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.601 [0.557, 0.645]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.700 [0.630, 0.770]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0487 [0.0464, 0.0510]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "3.97 × 10⁻⁷ [3.79 × 10⁻⁷, 4.16 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0.356 [0.263, 0.450]",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "1.51 [1.40, 1.62]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0404 [0.0351, 0.0458]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "17.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "iid",
+  "title": "sdgnn (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__iid__sdnn__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--iid",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__iid__sdnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "1",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0231 [0.0225, 0.0238]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.606 [0.563, 0.649]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.692 [0.632, 0.754]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0399 [0.0387, 0.0410]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "4.24 × 10⁻⁷ [3.88 × 10⁻⁷, 4.58 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0.381 [0.263, 0.500]",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "1.50 [1.40, 1.60]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0376 [0.0343, 0.0414]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "17.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "iid",
+  "title": "sdnn (acc, torch)"
  }
 };
