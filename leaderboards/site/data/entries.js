@@ -2018,5 +2018,510 @@ window.SYMBENCH_ENTRIES = {
   "robot": "nona",
   "split": "iid",
   "title": "sdnn (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__unseen-rotation__ffnn-leg__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--unseen-rotation",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__unseen-rotation__ffnn-leg__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "4",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.612 [0.584, 0.642]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.120 [0.116, 0.124]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.265 [0.259, 0.271]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "1.06 [1.01, 1.11]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.73 [1.53, 1.99]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0.0312 [0.0063, 0.0625]",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "0.812 [0.793, 0.831]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.118 [0.115, 0.122]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "192 283",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
+    "steps",
+    "7 900 [5 500, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "80.4 [55.6, 102.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 1, patience 4",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "unseen-rotation",
+  "title": "ffnn-leg (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__unseen-rotation__ffnn__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--unseen-rotation",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__unseen-rotation__ffnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.723 [0.708, 0.747]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.0144 [0.0042, 0.0247]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.0466 [0.0205, 0.0752]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "1.25 [1.22, 1.29]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.40 [1.36, 1.45]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.14 [1.08, 1.20]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "0.460 [0.432, 0.490]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.122 [0.116, 0.128]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "168 731",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.081",
+    ""
+   ],
+   [
+    "steps",
+    "7 700 [5 300, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "78.2 [53.4, 102.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3, patience 2",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "unseen-rotation",
+  "title": "ffnn (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__unseen-rotation__gnn__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--unseen-rotation",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__unseen-rotation__gnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "3",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.407 [0.394, 0.419]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.326 [0.294, 0.349]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.491 [0.454, 0.529]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.703 [0.682, 0.723]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.14 [1.08, 1.22]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.46 [1.39, 1.52]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0.113 [0.069, 0.156]",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "1.18 [1.12, 1.24]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0794 [0.0735, 0.0864]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "6 500 [4 900, 8 100]",
+    ""
+   ],
+   [
+    "epochs",
+    "65.6 [49.2, 82.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "patience 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "unseen-rotation",
+  "title": "gnn (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__unseen-rotation__sdgnn__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--unseen-rotation",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__unseen-rotation__sdgnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "1-2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0542 [0.0513, 0.0587]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.587 [0.542, 0.636]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.671 [0.608, 0.733]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0936 [0.0887, 0.1016]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "4.08 × 10⁻⁷ [3.87 × 10⁻⁷, 4.28 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0.331 [0.275, 0.388]",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "1.47 [1.36, 1.57]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0378 [0.0355, 0.0401]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "9 700 [9 100, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "98.8 [92.4, 102.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 4, patience 1",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "unseen-rotation",
+  "title": "sdgnn (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__unseen-rotation__sdnn__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--unseen-rotation",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__unseen-rotation__sdnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "1-2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0534 [0.0495, 0.0586]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.570 [0.545, 0.598]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.674 [0.624, 0.723]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0923 [0.0860, 0.1014]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "4.19 × 10⁻⁷ [3.92 × 10⁻⁷, 4.43 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0.388 [0.294, 0.475]",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "1.47 [1.39, 1.55]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0399 [0.0352, 0.0452]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
+    "steps",
+    "8 600 [6 600, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "87.6 [67.2, 102.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3, patience 2",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "unseen-rotation",
+  "title": "sdnn (acc, torch)"
  }
 };

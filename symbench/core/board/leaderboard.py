@@ -30,6 +30,7 @@ from pandas.api.typing import DataFrameGroupBy
 
 from symbench.core.board.cells import cell_of
 from symbench.core.board.claims import claims_markdown
+from symbench.core.board.cost import cost_section
 from symbench.core.board.plot_files import write_png
 from symbench.core.board.plots import asymmetry_figure, sample_efficiency_figure
 from symbench.core.board.series import asymmetry_series, sample_efficiency_series
@@ -297,7 +298,9 @@ def write_tables(records: list[tuple[Path, RecordV1]], out: Path) -> list[Path]:
     write_text_atomic(csv, flat.to_csv(index=False, float_format="%.6g"))
     written.append(csv)
     summary = out / "summary.md"
-    write_text_atomic(summary, headline(table))
+    write_text_atomic(
+        summary, headline(table).rstrip("\n") + "\n\n" + "\n".join(cost_section(records))
+    )
     written.append(summary)
     claims = out / "claims.md"
     write_text_atomic(claims, claims_markdown(table))

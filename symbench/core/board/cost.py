@@ -1,0 +1,59 @@
+"""What a board cost to make: the summed wall time its records report (dataset, training,
+the retrainings their evaluators asked for, evaluation), per dataset and model.
+
+A sweep confines each run to one core, so for a board made by sweeps these hours are
+core-hours, the figure a reader needs to plan a rerun or a cluster job. A training that
+several runs share (`symbench sweep`'s retrainings) is counted where it was made: the run
+that loaded it reports the load, seconds at most.
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from collections.abc import Iterable
+from pathlib import Path
+
+from symbench.core.runs.results import RecordV1
+
+PARTS = ("dataset_s", "training_s", "retraining_s", "evaluation_s")
+
+
+def _hours(seconds: float) -> str:
+    return f"{seconds / 3600:.2f}"
+
+
+def cost_section(records: Iterable[tuple[Path, RecordV1]]) -> list[str]:
+    """The Markdown section of summary.md: one row per dataset, hours by part and by model."""
+    by_dataset: dict[str, dict[str, float]] = defaultdict(lambda: defaultdict(float))
+    by_model: dict[str, dict[str, float]] = defaultdict(lambda: defaultdict(float))
+    runs: dict[str, int] = defaultdict(int)
+    for _, record in records:
+        did = record.dataset.id
+        runs[did] += 1
+        for part in PARTS:
+            seconds = float(record.timings_s.get(part, 0.0))
+            by_dataset[did][part] += seconds
+            by_model[did][record.model.name] += seconds
+    models = sorted({m for per_model in by_model.values() for m in per_model})
+    lines = [
+        "# What this board cost",
+        "",
+        "Hours of wall time the records report, summed (a sweep runs each job on one core, so "
+        "these are core-hours); a training that runs share counts once, where it was made.",
+        "",
+        "| dataset | runs | training | retraining | evaluation | total | "
+        + " | ".join(models)
+        + " |",
+        "|---|---|---|---|---|---|" + "---|" * len(models),
+    ]
+    for did in sorted(runs):
+        parts = by_dataset[did]
+        total = sum(parts.values())
+        lines.append(
+            f"| {did} | {runs[did]} | {_hours(parts['dataset_s'] + parts['training_s'])} | "
+            f"{_hours(parts['retraining_s'])} | {_hours(parts['evaluation_s'])} | "
+            f"{_hours(total)} | "
+            + " | ".join(_hours(by_model[did][m]) if m in by_model[did] else "-" for m in models)
+            + " |"
+        )
+    return lines + [""]

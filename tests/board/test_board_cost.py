@@ -1,0 +1,30 @@
+"""summary.md says what the board cost: the records' wall times summed per dataset and model."""
+
+from __future__ import annotations
+
+from symbench.core.board.cost import cost_section
+from symbench.core.board.leaderboard import load_records, write_leaderboard
+from symbench.core.runs.results import write_record
+
+
+def test_hours_add_up_by_part_and_by_model(tmp_path, make_record):
+    results = tmp_path / "results"
+    results.mkdir()
+    timings = {
+        "sdnn": {"dataset_s": 360.0, "training_s": 3240.0, "evaluation_s": 1800.0},
+        "ffnn": {"training_s": 720.0, "retraining_s": 1800.0, "evaluation_s": 0.0},
+    }
+    for model, parts in timings.items():
+        for seed in range(3):
+            record = make_record(model=model, seed=seed)
+            record["timings_s"] = parts
+            write_record(record, results / f"{model}{seed}.json")
+    lines = cost_section(load_records(results))
+    header = "| dataset | runs | training | retraining | evaluation | total | ffnn | sdnn |"
+    # sdnn: 3 x 1.5 h, ffnn: 3 x 0.7 h; training includes making the dataset
+    row = "| hexa-climb-smoke-v7 | 6 | 3.60 | 1.50 | 1.50 | 6.60 | 2.10 | 4.50 |"
+    assert header in lines and row in lines
+    write_leaderboard(results, tmp_path / "board")
+    summary = (tmp_path / "board" / "summary.md").read_text()
+    assert summary.endswith("\n".join(lines))
+    assert summary.index("# Leaderboard summary") < summary.index("# What this board cost")
