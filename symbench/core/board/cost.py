@@ -1,8 +1,9 @@
 """What a board cost to make: the summed wall time its records report (dataset, training,
 the retrainings their evaluators asked for, evaluation), per dataset and model.
 
-A sweep confines each run to one core, so for a board made by sweeps these hours are
-core-hours, the figure a reader needs to plan a rerun or a cluster job. A training that
+A run trains and simulates on one thread (torch's setting here, and every sweep worker's),
+so these hours are core-hours, the figure a reader needs to plan a rerun or a cluster job;
+on a machine shared with other work they overstate it. A training that
 several runs share (`symbench sweep`'s retrainings) is counted where it was made: the run
 that loaded it reports the load, seconds at most.
 """
@@ -38,8 +39,9 @@ def cost_section(records: Iterable[tuple[Path, RecordV1]]) -> list[str]:
     lines = [
         "# What this board cost",
         "",
-        "Hours of wall time the records report, summed (a sweep runs each job on one core, so "
-        "these are core-hours); a training that runs share counts once, where it was made.",
+        "Hours of wall time the records report, summed (a run trains and simulates on one "
+        "thread, so these are core-hours); a training that runs share counts once, where it "
+        "was made.",
         "",
         "| dataset | runs | training | retraining | evaluation | total | "
         + " | ".join(models)
