@@ -1,4 +1,509 @@
 window.SYMBENCH_ENTRIES = {
+ "hexa-climb-small-v7__converge__control-rotation__ffnn-leg__acc__torch": {
+  "board": "boards/hexa__hexa-climb-small-v7.html#converge--control-rotation",
+  "dataset": "hexa-climb-small-v7",
+  "entry": "entries/hexa-climb-small-v7__converge__control-rotation__ffnn-leg__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "3",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.217 [0.204, 0.231]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.277 [0.260, 0.294]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.818 [0.735, 0.908]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "172 306",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "4 700 [4 300, 5 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "32.0 [29.2, 34.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "patience 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "hexa",
+  "split": "control-rotation",
+  "title": "ffnn-leg (acc, torch)"
+ },
+ "hexa-climb-small-v7__converge__control-rotation__ffnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-small-v7.html#converge--control-rotation",
+  "dataset": "hexa-climb-small-v7",
+  "entry": "entries/hexa-climb-small-v7__converge__control-rotation__ffnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "4-5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.516 [0.480, 0.556]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.658 [0.613, 0.707]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.33 [1.19, 1.45]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.41 [1.34, 1.49]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "157 970",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.027",
+    ""
+   ],
+   [
+    "steps",
+    "6 700 [5 000, 8 600]",
+    ""
+   ],
+   [
+    "epochs",
+    "45.4 [33.8, 58.4]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 1, patience 4",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "hexa",
+  "split": "control-rotation",
+  "title": "ffnn (acc, torch)"
+ },
+ "hexa-climb-small-v7__converge__control-rotation__gnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-small-v7.html#converge--control-rotation",
+  "dataset": "hexa-climb-small-v7",
+  "entry": "entries/hexa-climb-small-v7__converge__control-rotation__gnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "4-5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.510 [0.464, 0.560]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.651 [0.595, 0.711]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.34 [1.30, 1.37]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.56 [1.42, 1.71]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.009",
+    ""
+   ],
+   [
+    "steps",
+    "4 700 [4 000, 5 400]",
+    ""
+   ],
+   [
+    "epochs",
+    "31.8 [27.2, 36.4]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "patience 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "hexa",
+  "split": "control-rotation",
+  "title": "gnn (acc, torch)"
+ },
+ "hexa-climb-small-v7__converge__control-rotation__sdgnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-small-v7.html#converge--control-rotation",
+  "dataset": "hexa-climb-small-v7",
+  "entry": "entries/hexa-climb-small-v7__converge__control-rotation__sdgnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0887 [0.0859, 0.0916]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.113 [0.110, 0.117]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "4.25 × 10⁻⁷ [3.86 × 10⁻⁷, 4.72 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "68.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "hexa",
+  "split": "control-rotation",
+  "title": "sdgnn (acc, torch)"
+ },
+ "hexa-climb-small-v7__converge__control-rotation__sdnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-small-v7.html#converge--control-rotation",
+  "dataset": "hexa-climb-small-v7",
+  "entry": "entries/hexa-climb-small-v7__converge__control-rotation__sdnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "1",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0741 [0.0708, 0.0774]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0945 [0.0907, 0.0983]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "4.16 × 10⁻⁷ [3.79 × 10⁻⁷, 4.60 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0135",
+    ""
+   ],
+   [
+    "steps",
+    "9 900 [9 700, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "67.4 [66.2, 68.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 4, patience 1",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "hexa",
+  "split": "control-rotation",
+  "title": "sdnn (acc, torch)"
+ },
  "hexa-climb-small-v7__converge__iid__ffnn-leg__acc__torch": {
   "board": "boards/hexa__hexa-climb-small-v7.html#converge--iid",
   "dataset": "hexa-climb-small-v7",
@@ -1512,6 +2017,1016 @@ window.SYMBENCH_ENTRIES = {
   "protocol": "converge",
   "robot": "hexa",
   "split": "unseen-rotation",
+  "title": "sdnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__iid__ffnn-leg__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--iid",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__iid__ffnn-leg__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "3",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.160 [0.155, 0.168]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.366 [0.355, 0.375]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.387 [0.374, 0.397]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.126 [0.121, 0.132]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.326 [0.289, 0.364]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "0.887 [0.863, 0.908]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0300 [0.0291, 0.0308]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "158 988",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "17.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "iid",
+  "title": "ffnn-leg (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__iid__ffnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--iid",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__iid__ffnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "4",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.337 [0.316, 0.366]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.282 [0.263, 0.300]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.338 [0.315, 0.360]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.265 [0.249, 0.288]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.982 [0.875, 1.095]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.30 [1.24, 1.34]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "0.799 [0.764, 0.835]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0503 [0.0474, 0.0531]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "150 796",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.027",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "17.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "iid",
+  "title": "ffnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__iid__gnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--iid",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__iid__gnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.455 [0.430, 0.472]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.130 [0.121, 0.139]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.177 [0.164, 0.188]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.357 [0.339, 0.370]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.973 [0.866, 1.107]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.46 [1.38, 1.56]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "0.514 [0.495, 0.532]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0714 [0.0686, 0.0751]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.027",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "17.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "iid",
+  "title": "gnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__iid__sdgnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--iid",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__iid__sdgnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.150 [0.145, 0.153]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.385 [0.379, 0.392]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.403 [0.395, 0.410]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.118 [0.113, 0.120]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "4.09 × 10⁻⁷ [3.62 × 10⁻⁷, 4.56 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "0.915 [0.898, 0.932]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0278 [0.0267, 0.0289]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "17.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "iid",
+  "title": "sdgnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__iid__sdnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--iid",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__iid__sdnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "1",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.114 [0.109, 0.119]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.405 [0.396, 0.413]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.418 [0.408, 0.427]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0897 [0.0851, 0.0937]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "3.74 × 10⁻⁷ [3.38 × 10⁻⁷, 4.10 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "0.941 [0.927, 0.956]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0256 [0.0249, 0.0261]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "17.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "iid",
+  "title": "sdnn (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__control-rotation__ffnn-leg__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--control-rotation",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__control-rotation__ffnn-leg__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "3",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.236 [0.224, 0.247]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.407 [0.386, 0.427]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.24 [1.12, 1.35]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "192 283",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
+    "steps",
+    "8 000 [6 700, 9 200]",
+    ""
+   ],
+   [
+    "epochs",
+    "81.2 [68.0, 93.6]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "patience 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "control-rotation",
+  "title": "ffnn-leg (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__control-rotation__ffnn__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--control-rotation",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__control-rotation__ffnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.473 [0.447, 0.498]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.815 [0.772, 0.861]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.16 [1.06, 1.26]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.17 [1.06, 1.29]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "168 731",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.081",
+    ""
+   ],
+   [
+    "steps",
+    "9 000 [7 000, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "91.8 [71.4, 102.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 4, patience 1",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "control-rotation",
+  "title": "ffnn (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__control-rotation__gnn__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--control-rotation",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__control-rotation__gnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "4",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.387 [0.360, 0.415]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.667 [0.621, 0.713]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.12 [1.01, 1.23]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.28 [1.12, 1.43]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "6 000 [4 300, 7 600]",
+    ""
+   ],
+   [
+    "epochs",
+    "60.6 [43.2, 77.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "patience 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "control-rotation",
+  "title": "gnn (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__control-rotation__sdgnn__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--control-rotation",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__control-rotation__sdgnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0552 [0.0527, 0.0573]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0951 [0.0912, 0.0988]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "4.04 × 10⁻⁷ [3.61 × 10⁻⁷, 4.43 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "102",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "control-rotation",
+  "title": "sdgnn (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__control-rotation__sdnn__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--control-rotation",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__control-rotation__sdnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "1",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0515 [0.0485, 0.0549]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0887 [0.0842, 0.0941]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "4.13 × 10⁻⁷ [3.62 × 10⁻⁷, 4.63 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
+    "steps",
+    "8 700 [7 300, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "88.6 [74.2, 102.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 2, patience 3",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "control-rotation",
   "title": "sdnn (acc, torch)"
  },
  "nona-climb-small-v7__converge__iid__ffnn-leg__acc__torch": {
