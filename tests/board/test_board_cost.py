@@ -28,3 +28,15 @@ def test_hours_add_up_by_part_and_by_model(tmp_path, make_record):
     summary = (tmp_path / "board" / "summary.md").read_text()
     assert summary.endswith("\n".join(lines))
     assert summary.index("# Leaderboard summary") < summary.index("# What this board cost")
+
+
+def test_a_model_in_two_backends_has_a_column_for_each(tmp_path, make_record):
+    for backend, seconds in (("torch", 3600.0), ("jax", 1800.0)):
+        for seed in range(3):
+            record = make_record(model="sdnn", backend=backend, seed=seed)
+            record["timings_s"] = {"training_s": seconds}
+            write_record(record, tmp_path / f"{backend}{seed}.json")
+    lines = cost_section(load_records(tmp_path))
+    header = "| dataset | runs | training | retraining | evaluation | total | "
+    assert header + "sdnn (acc, jax) | sdnn (acc, torch) |" in lines
+    assert "| hexa-climb-smoke-v7 | 6 | 4.50 | 0.00 | 0.00 | 4.50 | 1.50 | 3.00 |" in lines

@@ -1,5 +1,6 @@
 """What a board cost to make: the summed wall time its records report (dataset, training,
-the retrainings their evaluators asked for, evaluation), per dataset and model.
+the retrainings their evaluators asked for, evaluation), per dataset and model entry
+(named as summary.md names it: with variant and backend where a model has several).
 
 A run trains and simulates on one thread (torch's setting here, and every sweep worker's),
 so these hours are core-hours, the figure a reader needs to plan a rerun or a cluster job;
@@ -11,9 +12,11 @@ that loaded it reports the load, seconds at most.
 from __future__ import annotations
 
 from collections import defaultdict
-from collections.abc import Iterable
 from pathlib import Path
 
+import pandas as pd
+
+from symbench.core.board.summary import model_labels
 from symbench.core.runs.results import RecordV1
 
 PARTS = ("dataset_s", "training_s", "retraining_s", "evaluation_s")
@@ -23,18 +26,23 @@ def _hours(seconds: float) -> str:
     return f"{seconds / 3600:.2f}"
 
 
-def cost_section(records: Iterable[tuple[Path, RecordV1]]) -> list[str]:
+def cost_section(records: list[tuple[Path, RecordV1]]) -> list[str]:
     """The Markdown section of summary.md: one row per dataset, hours by part and by model."""
+    entries = pd.DataFrame(
+        [(r.model.name, r.model.variant, r.model.backend) for _, r in records],
+        columns=["model", "variant", "backend"],
+    )
+    labels = model_labels(entries) if len(entries) else pd.Series(dtype=str)
     by_dataset: dict[str, dict[str, float]] = defaultdict(lambda: defaultdict(float))
     by_model: dict[str, dict[str, float]] = defaultdict(lambda: defaultdict(float))
     runs: dict[str, int] = defaultdict(int)
-    for _, record in records:
+    for (_, record), label in zip(records, labels, strict=True):
         did = record.dataset.id
         runs[did] += 1
         for part in PARTS:
             seconds = float(record.timings_s.get(part, 0.0))
             by_dataset[did][part] += seconds
-            by_model[did][record.model.name] += seconds
+            by_model[did][label] += seconds
     models = sorted({m for per_model in by_model.values() for m in per_model})
     lines = [
         "# What this board cost",
