@@ -19,6 +19,7 @@ import pytest
 from cli_invoke import error_line, invoke
 from synthetic_raw import write_logs
 
+from symbench.core.common.processes import WorkerDied, run_each
 from symbench.core.data.importing.importer import import_logs
 from symbench.core.runs import sweep as sweeping
 from symbench.core.runs.cli import run as run_command
@@ -117,6 +118,34 @@ def test_ctrl_c_summary_counts_every_finished_run(smoke_hexa, home, tmp_path):
     records = list((tmp_path / "results").glob("*.json"))
     assert all(read_record(r) for r in records)
     assert int(found.group(1)) == len(records) < 12
+
+
+def test_a_sweep_goes_on_when_a_worker_is_killed_and_reruns_its_runs(smoke_hexa, home, tmp_path):
+    """The out-of-memory killer's SIGKILL of one worker costs a rerun, not the sweep."""
+    with running(sweep_command(tmp_path / "results"), home) as proc:
+        os.kill(workers_of(proc, 2)[0].pid, signal.SIGKILL)
+        output = proc.communicate(timeout=600)[0]
+    assert proc.returncode == 0, output
+    records = sorted((tmp_path / "results").glob("*.json"))
+    assert len(records) == 4 and all(read_record(r) for r in records), output
+
+
+def _square_unless_doomed(item: tuple[Path, int]) -> int:
+    """Dies like a killed process on item 3 always, and on item 1 the first time only."""
+    folder, i = item
+    first_time = not (folder / f"tried-{i}").exists()
+    (folder / f"tried-{i}").touch()
+    if i == 3 or (i == 1 and first_time):
+        os._exit(9)
+    return i * i
+
+
+def test_run_each_reruns_lost_items_alone_and_names_those_that_die_alone(tmp_path):
+    results: list[int] = []
+    with pytest.raises(WorkerDied) as died:
+        run_each(_square_unless_doomed, [(tmp_path, i) for i in range(6)], 2, results.append)
+    assert [i for _, i in died.value.items] == [3]
+    assert sorted(results) == [0, 1, 4, 16, 25]
 
 
 def test_a_ray_address_where_no_cluster_answers_is_an_error_within_seconds(

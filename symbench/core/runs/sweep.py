@@ -12,7 +12,9 @@ is simply redone. Datasets are made (or loaded) once each before the records are
 and so are the datasets the runs' evaluators declare trainings on (the closed loop's noisy
 variant), with all of the sweep's workers, so parallel runs never race to generate them.
 Local workers exit with the sweep, however it ends (`processes`); Ctrl-C reports how many
-runs have records, counted on disk.
+runs have records, counted on disk. A worker that dies (killed for memory) costs only the runs
+it and its pool had under way: they run again at the end, one at a time, and a run that dies
+even alone is named in the error, after every other run has finished.
 """
 
 from __future__ import annotations
@@ -22,7 +24,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import replace
 
 from symbench.core.common.errors import SymbenchError
-from symbench.core.common.processes import run_each
+from symbench.core.common.processes import WorkerDied, run_each
 from symbench.core.runs import ray_executor
 from symbench.core.runs.identity import record_state, refusal
 from symbench.core.runs.planning import declared_datasets
@@ -112,6 +114,12 @@ def sweep(
                 finish(_run_quietly(spec))
         else:
             run_each(_run_quietly, todo, workers, finish)
+    except WorkerDied as exc:
+        keys = ", ".join(spec.key() for spec in exc.items)
+        raise SymbenchError(
+            f"a worker process died running {keys}, even alone (out of memory?); every "
+            "other run finished; run the same command again to retry"
+        ) from None
     except KeyboardInterrupt:
         have = sum(finished(s, hashes[s.dataset_id]) for s in specs)
         raise SymbenchError(

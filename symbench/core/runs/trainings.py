@@ -13,7 +13,8 @@ import numpy as np
 from filelock import FileLock
 
 from symbench.core.common.arrays import ViewArrays
-from symbench.core.common.processes import run_each
+from symbench.core.common.errors import SymbenchError
+from symbench.core.common.processes import WorkerDied, run_each
 from symbench.core.data.dataset import Dataset
 from symbench.core.data.splits import SplitIndices
 from symbench.core.runs.evaluation import TrainedOnSplit
@@ -131,7 +132,13 @@ def train_ahead(
         on_done(result[0])
 
     quiet = replace(spec, progress=False, workers=1)
-    run_each(_fit_in_worker, [(quiet, job) for job in jobs], spec.workers, done)
+    try:
+        run_each(_fit_in_worker, [(quiet, job) for job in jobs], spec.workers, done)
+    except WorkerDied as exc:
+        raise SymbenchError(
+            f"a worker process died training {len(exc.items)} model(s), even alone (out of "
+            "memory?); the others are trained; run the same command again to retry"
+        ) from None
     return seconds
 
 

@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import time
 from collections.abc import Callable, Sequence
-from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -21,7 +20,7 @@ from typing import Any
 from symbench.core.common.errors import SymbenchError
 from symbench.core.common.hashing import sha256_file
 from symbench.core.common.jsonfile import read_json
-from symbench.core.common.processes import run_each
+from symbench.core.common.processes import WorkerDied, run_each
 from symbench.core.config.presets import RECORD_PERIOD, dataset_id, preset
 from symbench.core.data.dataset import Dataset, load_dataset
 from symbench.core.data.generation.determinism import (
@@ -219,10 +218,10 @@ def generate(
                 f"interrupted with {done} of {len(tasks)} trajectories "
                 "done; run the same command again to resume"
             ) from None
-        except BrokenProcessPool as exc:
+        except WorkerDied as exc:
             raise SymbenchError(
-                f"a worker process died ({exc}) with {len(records)} of "
-                f"{len(tasks)} trajectories done; run again to resume (a script "
+                f"a worker process died on {len(exc.items)} trajectories, even run alone, "
+                f"with {len(records)} of {len(tasks)} done; run again to resume (a script "
                 "that calls generate() needs an "
                 "`if __name__ == '__main__':` guard)"
             ) from None

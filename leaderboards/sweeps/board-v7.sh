@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# What remains of board v7, in the order it is published, run from a clean worktree at the
+# commit the small board is made at. Every sweep skips the runs whose record exists, so the
+# same command resumes after an interruption; the published records and those kept in
+# ../pending/ (committed between working sessions, before their group is complete) are
+# copied into the worktree first. A sweep whose
+# worker died (out of memory) is run again with one worker before the next phase starts.
+#
+#   leaderboards/sweeps/board-v7.sh [WORKTREE]        (default: ../wt-board7m beside the repo)
+set -uo pipefail
+
+REPO=$(cd "$(dirname "$0")/../.." && pwd)
+COMMIT=7a8d9fb
+WT=${1:-$(dirname "$REPO")/wt-board7m}
+PY=${PYTHON:-$REPO/.venv/bin/python}
+MODELS=sdnn,sdgnn,ffnn,ffnn-leg,gnn
+ALL=torque-error,equivariance,invariance,generalization,closed-loop,image-overlap,generalization-gap
+OPEN=torque-error,equivariance,invariance,generalization,image-overlap,generalization-gap
+FRACTIONS=fraction-0.1,fraction-0.25,fraction-0.5,fraction-0.75
+
+[ -d "$WT" ] || git -C "$REPO" worktree add --detach "$WT" "$COMMIT"
+[ "$(git -C "$WT" rev-parse --short=7 HEAD)" = "$COMMIT" ] || { echo "$WT is not at $COMMIT" >&2; exit 1; }
+[ -z "$(git -C "$WT" status --porcelain --untracked-files=no)" ] || { echo "$WT is not clean" >&2; exit 1; }
+mkdir -p "$WT/results"
+cp -n "$REPO"/leaderboards/records/*-v7__*.json "$WT/results/"
+for kept in "$REPO"/leaderboards/pending/*/; do
+    [ -d "$kept" ] || continue
+    mkdir -p "$WT/$(basename "$kept")"
+    cp -n "$kept"*.json "$WT/$(basename "$kept")/"
+done
+
+sweep() {  # sweep OUTPUT ARGS...: once with $WORKERS workers, again with one if a worker died
+    local out=$1; shift
+    (cd "$WT" && MUJOCO_GL=disable PYTHONPATH="$WT" "$PY" -m symbench sweep "$@" --output "$out" \
+        --workers "${WORKERS:-2}") ||
+    (cd "$WT" && MUJOCO_GL=disable PYTHONPATH="$WT" "$PY" -m symbench sweep "$@" --output "$out" \
+        --workers 1)
+}
+
+# 1. every robot's iid and unseen-rotation, with the closed loop
+sweep results --models $MODELS --robots hexa,nona,magneto --splits iid,unseen-rotation --evaluators $ALL
+# 2. the size-matched controls and the unseen headings
+sweep results --models $MODELS --robots hexa,nona,magneto \
+    --splits control-rotation,unseen-heading,control-heading --evaluators $OPEN
+# 3. sample efficiency
+sweep results --models $MODELS --robots hexa,nona,magneto --splits $FRACTIONS --evaluators $OPEN
+# 4. the matched-size section
+sweep results-matched --models $MODELS --robots nona,magneto --splits iid --parameters 100000 \
+    --evaluators torque-error,equivariance,invariance,image-overlap
+# 5. the JAX entries
+sweep results-jax --models sdnn,ffnn --backends jax --robots hexa --splits iid --evaluators $ALL
+# 6. the paper board (hexa): 50 000 cosine steps, 3 seeds
+sweep results-paper --models $MODELS --robots hexa --preset paper --protocol cosine \
+    --max-steps 50000 --seeds 0,1,2 --splits iid,unseen-rotation --evaluators $ALL
+sweep results-paper --models $MODELS --robots hexa --preset paper --protocol cosine \
+    --max-steps 50000 --seeds 0,1,2 --splits control-rotation,fraction-0.1 --evaluators $OPEN
+# 7. the studies again on v7 (each publishes to leaderboards/studies/<name>-v7)
+sweep results-asymmetry --models sdnn,sdgnn,ffnn --robots hexa-asym-0.05,hexa-asym-0.1,hexa-asym-0.2 \
+    --splits iid --evaluators torque-error,equivariance,data-symmetry
+sweep results-library --models e2cnn-mlp --robots hexa --splits iid,unseen-rotation \
+    --evaluators torque-error,equivariance,invariance
+sweep results-transfer --models sdnn,sdgnn,ffnn --robots magneto,hexa,nona --preset transfer \
+    --splits unseen-inclination,unseen-gait --evaluators torque-error,equivariance
+sweep results-mirror --models sdnn --size mirror=1 --robots hexa --splits iid,unseen-rotation,fraction-0.1 \
+    --evaluators torque-error,equivariance,invariance
+sweep results-mirror --models sdnn --size mirror=1 --robots nona,magneto --splits iid,fraction-0.1 \
+    --evaluators torque-error,equivariance,invariance
+sweep results-mirror --models sdnn --size mirror=1 --robots hexa --preset transfer --splits unseen-gait \
+    --evaluators torque-error,equivariance
