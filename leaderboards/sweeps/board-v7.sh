@@ -39,9 +39,11 @@ sweep() {  # sweep OUTPUT ARGS...: once with $WORKERS workers, again with one if
 
 # 1. every robot's iid and unseen-rotation, with the closed loop
 sweep results --models $MODELS --robots hexa,nona,magneto --splits iid,unseen-rotation --evaluators $ALL
-# 2. the size-matched controls and the unseen headings
+# 2. the size-matched controls (their trainings are left by step 1's generalization-gap
+# evaluator, when its checkpoints are still there) and the unseen headings
+sweep results --models $MODELS --robots hexa,nona,magneto --splits control-rotation --evaluators $OPEN
 sweep results --models $MODELS --robots hexa,nona,magneto \
-    --splits control-rotation,unseen-heading,control-heading --evaluators $OPEN
+    --splits unseen-heading,control-heading --evaluators $OPEN
 # 3. sample efficiency
 sweep results --models $MODELS --robots hexa,nona,magneto --splits $FRACTIONS --evaluators $OPEN
 # 4. the matched-size section
