@@ -37,15 +37,15 @@ sweep() {  # sweep OUTPUT ARGS...: once with $WORKERS workers, again with one if
         --workers 1)
 }
 
-# 1. every robot's iid and unseen-rotation, with the closed loop
-sweep results --models $MODELS --robots hexa,nona,magneto --splits iid,unseen-rotation --evaluators $ALL
-# 2. the size-matched controls (their trainings are left by step 1's generalization-gap
-# evaluator, when its checkpoints are still there) and the unseen headings
-sweep results --models $MODELS --robots hexa,nona,magneto --splits control-rotation --evaluators $OPEN
-sweep results --models $MODELS --robots hexa,nona,magneto \
-    --splits unseen-heading,control-heading --evaluators $OPEN
-# 3. sample efficiency
-sweep results --models $MODELS --robots hexa,nona,magneto --splits $FRACTIONS --evaluators $OPEN
+# 1-3. the small grid, robot by robot: a run's generalization evaluators train its model on
+# other splits of its robot (unseen-rotation's: iid, unseen-heading, control-rotation), whose
+# runs find those trainings while the checkpoints are on disk (they are not committed; a new
+# machine trains them again)
+for robot in magneto hexa nona; do
+    sweep results --models $MODELS --robots $robot --splits iid,unseen-rotation --evaluators $ALL
+    sweep results --models $MODELS --robots $robot \
+        --splits control-rotation,unseen-heading,control-heading,$FRACTIONS --evaluators $OPEN
+done
 # 4. the matched-size section
 sweep results-matched --models $MODELS --robots nona,magneto --splits iid --parameters 100000 \
     --evaluators torque-error,equivariance,invariance,image-overlap
