@@ -42,6 +42,7 @@ LAZY_COMMANDS: dict[str, str] = {
     "tune": "symbench.core.runs.cli.tune:tune",
     "data": "symbench.core.data.cli:data",
     "presets": "symbench.core.config.cli:presets",
+    "export": "symbench.core.training.cli:export",
     "check-equivariance": "symbench.testing.cli:check_equivariance",
 }
 

@@ -99,6 +99,8 @@ def _latency_is_measured_with_the_fewest_threads_only(settings):
     assert first["latency_measured"]
     assert all(r[f"infer_batch1_us_{r['infer_best']}"] > 0 for r in first["rows"])
     assert all(r[f"infer_lockstep_us_{r['lockstep_best']}"] > 0 for r in first["rows"])
+    # torch rows also time their ONNX export under ONNX Runtime, JAX rows do not
+    assert all(("infer_batch1_us_onnx" in r) == (r["backend"] == "torch") for r in first["rows"])
     for setting in others:
         assert not setting["latency_measured"]
         assert not any(key.startswith("infer") for r in setting["rows"] for key in r)

@@ -32,6 +32,7 @@ from symbench.core.plugin.entries import BACKENDS
 from symbench.core.training.backends import get_backend
 from symbench.core.training.kernels import TORCH_PINS
 from symbench.core.training.normalization import Normalizer
+from symbench.core.training.onnx_export import onnx_bytes, onnx_predictor
 
 BATCH = 64
 # the closed loop's call on `small`: every reference at every PD fraction in one batch
@@ -57,21 +58,19 @@ def train_rate(entry, views, compiled: bool, seconds: float) -> float:
     return best_rate(lambda: trainer.train_epoch(order), order.size, seconds)
 
 
-def latency_us(entry, views, compiled: bool, seconds: float, batch: int = 1) -> float:
+def latency_us(entry, views, mode: str, seconds: float, batch: int = 1) -> float:
     """Median wall time of one prediction of `batch` rows (normalization included),
-    microseconds."""
+    microseconds; `mode` plain or compiled (the backend's predictor), or onnx (the model
+    exported as `symbench export` writes it, run by ONNX Runtime on one thread)."""
     data = views[entry.view]
-    backend = get_backend(entry.backend)
     dims = dims_of(data)
-    predict = backend.make_predictor(
-        entry,
-        dims,
-        {},
-        backend.init_params(entry, dims, {}, 0),
-        Normalizer.fit(data),
-        np.float32,
-        compiled,
-    )
+    backend = get_backend(entry.backend)
+    params, normalizer = backend.init_params(entry, dims, {}, 0), Normalizer.fit(data)
+    if mode == "onnx":
+        predict = onnx_predictor(onnx_bytes(entry, dims, {}, params, normalizer), dims.keys)
+    else:
+        compiled = mode == "compiled"
+        predict = backend.make_predictor(entry, dims, {}, params, normalizer, np.float32, compiled)
     rows = {k: v[:batch].astype(np.float32) for k, v in data.inputs.items()}
     for _ in range(20):
         predict(rows)
@@ -95,15 +94,16 @@ def measure(
     for compiled, mode in zip(modes, names):
         say(f"training, {mode}")
         row[f"train_samples_per_s_{mode}"] = train_rate(entry, views, compiled, seconds)
-        if latency:
-            say(f"batch-1 inference, {mode}")
-            row[f"infer_batch1_us_{mode}"] = latency_us(entry, views, compiled, seconds)
-            say(f"lockstep inference ({LOCKSTEP} rows), {mode}")
-            row[f"infer_lockstep_us_{mode}"] = latency_us(entry, views, compiled, seconds, LOCKSTEP)
     row["train_best"] = max(names, key=lambda m: row[f"train_samples_per_s_{m}"])
     if latency:
-        row["infer_best"] = min(names, key=lambda m: row[f"infer_batch1_us_{m}"])
-        row["lockstep_best"] = min(names, key=lambda m: row[f"infer_lockstep_us_{m}"])
+        inference = [*names, *(["onnx"] if entry.backend == "torch" else [])]
+        for mode in inference:
+            say(f"batch-1 inference, {mode}")
+            row[f"infer_batch1_us_{mode}"] = latency_us(entry, views, mode, seconds)
+            say(f"lockstep inference ({LOCKSTEP} rows), {mode}")
+            row[f"infer_lockstep_us_{mode}"] = latency_us(entry, views, mode, seconds, LOCKSTEP)
+        row["infer_best"] = min(inference, key=lambda m: row[f"infer_batch1_us_{m}"])
+        row["lockstep_best"] = min(inference, key=lambda m: row[f"infer_lockstep_us_{m}"])
     say("counting FLOPs")
     flops = step_flops_per_sample(entry, dims_of(views[entry.view]), BATCH)
     row["train_flops_per_sample"] = flops

@@ -5,7 +5,8 @@ reference at every PD fraction on `small`), per thread setting.
 Every model in both backends, on synthetic data shaped like the robot's, in each backend's
 default mode, or (`--modes both`) uncompiled and compiled side by side (torch.compile; JAX:
 one jitted call per step vs one jitted scan per epoch for training, eager vs jit for
-inference), so the table shows which wins.
+inference), so the table shows which wins; torch models' latency also as ONNX Runtime runs
+their export (`symbench export`: what a controller outside Python would call).
 
 The limit is one honest denominator per thread setting: the best dense-matmul rate either
 backend reaches with that setting's cores, measured in the same process as the rows (see
@@ -135,8 +136,9 @@ def _table(robot: str, setting: dict[str, Any]) -> Table:
     )
     columns = ["model", "backend", *(f"train/s {m}" for m in modes)]
     columns += ["GFLOP/sample", "of best matmul"]
-    columns += [f"infer us {m}" for m in modes] if latency else []
-    columns += [f"lockstep us {m}" for m in modes] if latency else []
+    inference = [*modes, *(["onnx"] if any("infer_batch1_us_onnx" in r for r in rows) else [])]
+    columns += [f"infer us {m}" for m in inference] if latency else []
+    columns += [f"lockstep us {m}" for m in inference] if latency else []
     for col in columns:
         table.add_column(col, justify="right")
     for r in rows:
@@ -149,7 +151,7 @@ def _table(robot: str, setting: dict[str, Any]) -> Table:
             cells += [
                 _figure(r, f"infer_{size}_us_{m}", "{:.1f}", r[best] == m)
                 for size, best in (("batch1", "infer_best"), ("lockstep", "lockstep_best"))
-                for m in modes
+                for m in inference
             ]
         table.add_row(*cells)
     return table

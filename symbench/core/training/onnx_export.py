@@ -1,0 +1,126 @@
+"""A trained torch model as one ONNX file, its normalization included: what a controller
+outside Python loads (ONNX Runtime from C++, say), and the fastest batch-1 call this
+project has measured (`symbench bench models`: the closed loop calls a model at 1 kHz).
+
+The file takes the model's raw inputs by their view keys (float32, any batch size) and
+gives torques in N m, shape (batch, legs, 3); its metadata holds the model's description
+(`TrainedModel.describe`) under the key `symbench`, so it names the data, configuration and
+training it came from. `write_onnx` refuses to write a file whose outputs, run by ONNX
+Runtime, differ from the model's own by more than float32 rounding.
+"""
+
+from __future__ import annotations
+
+import json
+import tempfile
+import warnings
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from symbench.core.common.atomic import write_bytes_atomic
+from symbench.core.common.errors import SymbenchError
+from symbench.core.data.views.model_dims import ModelDims
+from symbench.core.plugin.entries import ModelEntry
+from symbench.core.training.normalization import Normalizer
+from symbench.core.training.trained_model import TrainedModel
+
+OPSET = 17
+OUTPUT = "torque"
+METADATA_KEY = "symbench"
+PARITY_ROWS = 256
+# |ONNX Runtime - torch| allowed, relative to the largest torque of the parity rows: a few
+# float32 roundings through the network (both run float32, in different kernels)
+PARITY_TOLERANCE = 1e-4
+
+
+def onnx_bytes(
+    entry: ModelEntry,
+    dims: ModelDims,
+    hyper: dict[str, Any],
+    params: dict[str, np.ndarray],
+    normalizer: Normalizer,
+    metadata: dict[str, Any] | None = None,
+) -> bytes:
+    """The network between its normalization and de-normalization as an ONNX model (float32,
+    the batch dimension dynamic), `metadata` as JSON under `METADATA_KEY`."""
+    if entry.backend != "torch":
+        raise SymbenchError(
+            f"ONNX export takes a torch model; {entry.name} is a {entry.backend} model "
+            f"(train it with --backend torch)"
+        )
+    import onnx
+    import torch
+
+    from symbench.core.training.backends.torch_backend import Normalized, build_network
+
+    module = Normalized(build_network(entry, dims, hyper, params), normalizer, dims.keys)
+    module = module.to(torch.float32).eval()
+    example = tuple(torch.zeros((2, *shape), dtype=torch.float32) for _, shape in dims.inputs)
+    with tempfile.TemporaryDirectory() as scratch, warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the legacy exporter's deprecation notice
+        torch.onnx.export(
+            module,
+            example,
+            Path(scratch) / "model.onnx",
+            input_names=list(dims.keys),
+            output_names=[OUTPUT],
+            dynamic_axes={name: {0: "batch"} for name in (*dims.keys, OUTPUT)},
+            opset_version=OPSET,
+            dynamo=False,
+        )
+        model = onnx.load(Path(scratch) / "model.onnx")
+    if metadata is not None:
+        onnx.helper.set_model_props(model, {METADATA_KEY: json.dumps(metadata, sort_keys=True)})
+    return model.SerializeToString()
+
+
+def onnx_predictor(
+    model: bytes, keys: tuple[str, ...], threads: int = 1
+) -> Callable[[dict[str, np.ndarray]], np.ndarray]:
+    """`predict(inputs)` running `model` in ONNX Runtime on `threads` threads: raw inputs by
+    key in, torques in N m (float64) out."""
+    import onnxruntime
+
+    options = onnxruntime.SessionOptions()
+    options.intra_op_num_threads = options.inter_op_num_threads = threads
+    options.graph_optimization_level = onnxruntime.GraphOptimizationLevel.ORT_ENABLE_ALL
+    session = onnxruntime.InferenceSession(model, options, providers=["CPUExecutionProvider"])
+
+    def predict(inputs: dict[str, np.ndarray]) -> np.ndarray:
+        feed = {k: np.asarray(inputs[k], np.float32) for k in keys}
+        return session.run([OUTPUT], feed)[0].astype(np.float64)
+
+    return predict
+
+
+def parity_inputs(model: TrainedModel, rows: int = PARITY_ROWS) -> dict[str, np.ndarray]:
+    """Inputs spread as the model's training inputs were: its normalizer's mean plus its std
+    times standard normal draws (seeded), in every input's shape."""
+    rng = np.random.default_rng(0)
+    inputs = {}
+    for key, shape in model.dims.inputs:
+        mean, std = model.normalizer.stats[key]
+        inputs[key] = (mean + std * rng.standard_normal((rows, *shape))).astype(np.float32)
+    return inputs
+
+
+def write_onnx(model: TrainedModel, path: Path) -> float:
+    """`model` as an ONNX file at `path` (written atomically), after checking ONNX Runtime
+    against the model on `parity_inputs`; returns the largest difference, N m."""
+    data = onnx_bytes(
+        model.entry, model.dims, model.hyper, model.params, model.normalizer, model.describe()
+    )
+    inputs = parity_inputs(model)
+    expected = model.predict(inputs)
+    difference = float(np.max(np.abs(onnx_predictor(data, model.dims.keys)(inputs) - expected)))
+    scale = float(np.max(np.abs(expected)))
+    if not difference <= PARITY_TOLERANCE * max(scale, 1e-12):
+        raise SymbenchError(
+            f"the ONNX export of {model.entry.name} differs from the model by {difference:.3g} "
+            f"N m (largest torque {scale:.3g}): not written"
+        )
+    write_bytes_atomic(Path(path), data)
+    return difference
