@@ -54,15 +54,28 @@ def test_the_verdict_follows_from_the_interval_whichever_way_it_falls(
     assert comparison.verdict == verdict
 
 
-def test_the_penalty_for_unseen_yaws_is_each_model_against_its_own_control(tmp_path, make_record):
+@pytest.mark.parametrize(
+    ("held_out", "control"),
+    [("unseen-rotation", "control-rotation"), ("unseen-heading", "control-heading")],
+)
+def test_the_penalty_for_unseen_orientations_is_each_model_against_its_own_control(
+    tmp_path, make_record, held_out, control
+):
     runs = (
-        unseen("ffnn", [2.0] * 5)
-        + unseen("ffnn", [1.0, 1.0, 1.0, 1.0, 2.0], "control-rotation")
-        + unseen("sdnn", [0.3] * 5)
-        + unseen("sdnn", [0.3] * 5, "control-rotation")
+        unseen("ffnn", [2.0] * 5, held_out)
+        + unseen("ffnn", [1.0, 1.0, 1.0, 1.0, 2.0], control)
+        + unseen("sdnn", [0.3] * 5, held_out)
+        + unseen("sdnn", [0.3] * 5, control)
+        # the other held-out split's control, which must not stand in for this one's
+        + unseen(
+            "ffnn",
+            [9.0] * 5,
+            "control-heading" if control == "control-rotation" else "control-rotation",
+        )
     )
     found = comparisons(board(tmp_path, make_record, runs))
-    penalty = next(c for (_, what), c in found.items() if "penalty" in what)
+    (penalty,) = [c for (_, what), c in found.items() if "penalty" in what]
+    assert penalty.what == f"ffnn's penalty / sdnn's ({held_out} / {control})"
     # per seed (2 / control) / (0.3 / 0.3): 2 on four seeds, 1 on the fifth
     assert penalty.estimate.value == pytest.approx(2**0.8)
     log_ratios = np.log([2, 2, 2, 2, 1])
