@@ -61,13 +61,15 @@ def train_rate(entry, views, compiled: bool, seconds: float) -> float:
 def latency_us(entry, views, mode: str, seconds: float, batch: int = 1) -> float:
     """Median wall time of one prediction of `batch` rows (normalization included),
     microseconds; `mode` plain or compiled (the backend's predictor), or onnx (the model
-    exported as `symbench export` writes it, run by ONNX Runtime on one thread)."""
+    exported as `symbench export --batch BATCH` writes it, run by ONNX Runtime on one
+    thread)."""
     data = views[entry.view]
     dims = dims_of(data)
     backend = get_backend(entry.backend)
     params, normalizer = backend.init_params(entry, dims, {}, 0), Normalizer.fit(data)
     if mode == "onnx":
-        predict = onnx_predictor(onnx_bytes(entry, dims, {}, params, normalizer), dims.keys)
+        exported = onnx_bytes(entry, dims, {}, params, normalizer, batch=batch)
+        predict = onnx_predictor(exported, dims.keys)
     else:
         compiled = mode == "compiled"
         predict = backend.make_predictor(entry, dims, {}, params, normalizer, np.float32, compiled)

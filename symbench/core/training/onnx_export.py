@@ -43,9 +43,12 @@ def onnx_bytes(
     params: dict[str, np.ndarray],
     normalizer: Normalizer,
     metadata: dict[str, Any] | None = None,
+    batch: int | None = None,
 ) -> bytes:
-    """The network between its normalization and de-normalization as an ONNX model (float32,
-    the batch dimension dynamic), `metadata` as JSON under `METADATA_KEY`."""
+    """The network between its normalization and de-normalization as an ONNX model (float32),
+    `metadata` as JSON under `METADATA_KEY`. The batch size is `batch`, or any when None;
+    fixed, it lets ONNX Runtime fold the shape arithmetic away (a batch-1 call of sdnn on
+    hexa: 29 against 41 us, measured side by side on a loaded 2-core machine)."""
     if entry.backend != "torch":
         raise SymbenchError(
             f"ONNX export takes a torch model; {entry.name} is a {entry.backend} model "
@@ -58,7 +61,9 @@ def onnx_bytes(
 
     module = Normalized(build_network(entry, dims, hyper, params), normalizer, dims.keys)
     module = module.to(torch.float32).eval()
-    example = tuple(torch.zeros((2, *shape), dtype=torch.float32) for _, shape in dims.inputs)
+    rows = 2 if batch is None else batch
+    example = tuple(torch.zeros((rows, *shape), dtype=torch.float32) for _, shape in dims.inputs)
+    names = (*dims.keys, OUTPUT)
     with tempfile.TemporaryDirectory() as scratch, warnings.catch_warnings():
         warnings.simplefilter("ignore")  # the legacy exporter's deprecation notice
         torch.onnx.export(
@@ -67,7 +72,7 @@ def onnx_bytes(
             Path(scratch) / "model.onnx",
             input_names=list(dims.keys),
             output_names=[OUTPUT],
-            dynamic_axes={name: {0: "batch"} for name in (*dims.keys, OUTPUT)},
+            dynamic_axes=None if batch is not None else {name: {0: "batch"} for name in names},
             opset_version=OPSET,
             dynamo=False,
         )
@@ -107,15 +112,30 @@ def parity_inputs(model: TrainedModel, rows: int = PARITY_ROWS) -> dict[str, np.
     return inputs
 
 
-def write_onnx(model: TrainedModel, path: Path) -> float:
-    """`model` as an ONNX file at `path` (written atomically), after checking ONNX Runtime
-    against the model on `parity_inputs`; returns the largest difference, N m."""
+def write_onnx(model: TrainedModel, path: Path, batch: int | None = None) -> tuple[float, int]:
+    """`model` as an ONNX file at `path` (written atomically; of batch size `batch`, any when
+    None), after checking ONNX Runtime against the model on `parity_inputs` (in calls of
+    `batch` rows); returns the largest difference (N m) and the rows compared."""
     data = onnx_bytes(
-        model.entry, model.dims, model.hyper, model.params, model.normalizer, model.describe()
+        model.entry,
+        model.dims,
+        model.hyper,
+        model.params,
+        model.normalizer,
+        model.describe(),
+        batch,
     )
-    inputs = parity_inputs(model)
+    call = PARITY_ROWS if batch is None else batch
+    inputs = parity_inputs(model, -(-PARITY_ROWS // call) * call)
     expected = model.predict(inputs)
-    difference = float(np.max(np.abs(onnx_predictor(data, model.dims.keys)(inputs) - expected)))
+    predict = onnx_predictor(data, model.dims.keys)
+    got = np.concatenate(
+        [
+            predict({k: v[start : start + call] for k, v in inputs.items()})
+            for start in range(0, len(expected), call)
+        ]
+    )
+    difference = float(np.max(np.abs(got - expected)))
     scale = float(np.max(np.abs(expected)))
     if not difference <= PARITY_TOLERANCE * max(scale, 1e-12):
         raise SymbenchError(
@@ -123,4 +143,4 @@ def write_onnx(model: TrainedModel, path: Path) -> float:
             f"N m (largest torque {scale:.3g}): not written"
         )
     write_bytes_atomic(Path(path), data)
-    return difference
+    return difference, len(expected)
