@@ -9,6 +9,7 @@ installed with apt-get when it is missing; the test fails, never skips, when tha
 from __future__ import annotations
 
 import io
+import json
 import os
 import subprocess
 import sys
@@ -22,8 +23,9 @@ from PIL import Image
 from system_packages import ensure_osmesa
 
 from symbench.core.board.leaderboard import aggregate, load_records
-from symbench.core.board.site.clips import choose
-from symbench.core.board.site.names import GroupKey
+from symbench.core.board.site.clips import choose, shows
+from symbench.core.board.site.names import MARKER, GroupKey, clip_file
+from symbench.core.common.errors import SymbenchError
 from symbench.core.config.presets import dataset_id
 from symbench.core.runs.results import write_record
 
@@ -43,6 +45,7 @@ def _write(folder: Path, make_record, scores=SCORES, split="iid", seeds=(1, 0)) 
             record["metrics"]["closed-loop"] = {
                 "trained_on": NOISY,
                 "pd_normalized_score": None if score is None else score + seed / 100,
+                "judged": {"checkpoint_sha256": f"{model}{seed}".encode().hex().ljust(64, "0")},
             }
             write_record(record, folder / f"{model}-{split}-seed{seed}.json")
     return folder
@@ -97,6 +100,48 @@ def test_a_missing_checkpoint_is_one_line_and_writes_nothing(tmp_path, make_reco
         "of its run"
     )
     assert not site.exists()
+
+
+def _kept_site(site: Path, records: list, caption: str, judged: str | None = None) -> None:
+    """A site an earlier build made, holding the clips of the choices among `records`, each
+    with the sidecar that names what it shows (another judged network when `judged`)."""
+    (site / "clips").mkdir(parents=True)
+    (site / MARKER).write_text("built\n")
+    for choice in choose(aggregate(records), records):
+        r = choice.record
+        clip = site / clip_file(r.robot, r.dataset.id, choice.role, r.model.name)
+        clip.write_bytes(f"webp of {r.model.name}".encode())
+        shown = shows(r) | ({"checkpoint_sha256": judged} if judged else {})
+        clip.with_suffix(".json").write_text(json.dumps({"shows": shown, "caption": caption}))
+
+
+def test_a_clip_whose_checkpoint_is_gone_is_kept_from_the_site_it_replaces(
+    tmp_path, make_record, monkeypatch
+):
+    monkeypatch.setenv("MUJOCO_GL", "disable")
+    monkeypatch.delenv("PYOPENGL_PLATFORM", raising=False)
+    results = _write(tmp_path / "r", make_record)
+    site = tmp_path / "site"
+    _kept_site(site, load_records(results), "held 2.00 s of 2.00 s (kept)")
+    result = invoke("leaderboard", "--results", results, "--html", site, "--clips")
+    assert result.exit_code == 0, result.output
+    page = (site / f"boards/hexa__{HEXA}.html").read_text()
+    assert page.count("held 2.00 s of 2.00 s (kept)") == 2
+    for model in ("sdnn", "ffnn"):
+        clip = next((site / "clips").glob(f"*-{model}.webp"))
+        assert clip.read_bytes() == f"webp of {model}".encode()
+        assert json.loads(clip.with_suffix(".json").read_text())["caption"].endswith("(kept)")
+
+
+def test_a_kept_clip_of_another_network_is_not_shown(tmp_path, make_record, monkeypatch):
+    monkeypatch.setenv("MUJOCO_GL", "disable")
+    monkeypatch.delenv("PYOPENGL_PLATFORM", raising=False)
+    results = _write(tmp_path / "r", make_record)
+    site = tmp_path / "site"
+    _kept_site(site, load_records(results), "a retrained network's climb", judged="f" * 64)
+    result = invoke("leaderboard", "--results", results, "--html", site, "--clips")
+    assert "no closed-loop checkpoint for the clip of" in error_line(result, 1)
+    assert (site / "clips" / f"hexa__{HEXA}-best-sdnn.webp").read_bytes() == b"webp of sdnn"
 
 
 def test_clips_need_the_site(tmp_path, make_record):
@@ -173,6 +218,25 @@ def test_the_clip_model_is_the_records(trained):
         rmse = [r.joint_rmse_rad for r in at_headline]
         assert float(np.mean(held)) == pytest.approx(metrics["pd_time_to_failure_s"], rel=1e-12)
         assert float(np.mean(rmse)) == pytest.approx(metrics["pd_joint_rmse_rad"], rel=1e-12)
+
+
+@pytest.mark.slow
+def test_a_checkpoint_that_is_not_the_judged_network_is_refused(trained, tmp_path):
+    """The same model trained again elsewhere differs in its last bits: one weight moved."""
+    import shutil
+
+    from symbench.core.board.site.clips import closed_loop_model, judged_model
+
+    results = shutil.copytree(trained / "results", tmp_path / "results")
+    path, record = next((p, r) for p, r in load_records(results) if r.model.name == "sdnn")
+    assert judged_model(path, record, results).sha256() == shows(record)["checkpoint_sha256"]
+    stored = closed_loop_model(path, record, results)
+    model = stored.load()
+    name = sorted(model.params)[0]
+    model.params[name] = model.params[name] + np.float32(1e-6)
+    model.save(stored.folder)
+    with pytest.raises(SymbenchError, match="is not the network it judged"):
+        judged_model(path, record, results)
 
 
 @pytest.mark.slow

@@ -15,7 +15,9 @@ and the Markdown board never disagree. The same records give the same bytes: not
 depends on the time of the build or on the order of the files.
 
 With `clips` (a results folder holding the runs' checkpoints) each board page also shows
-clips of the closed loop, the best and the worst model climbing beside the expert (`clips`).
+clips of the closed loop, the best and the worst model climbing beside the expert (`clips`);
+a clip whose checkpoint is gone is kept from the site being replaced when it shows the same
+record and network.
 
 The site is built whole in a staging folder beside DIR and put in its place, so a failure
 leaves the old site as it was; a non-empty DIR that no build made is refused, not replaced.
@@ -57,7 +59,8 @@ def build_site(
     the clips load, board pages show them. Returns the files written, sorted."""
     records = load_records(results) if records is None else records
     table = aggregate(records)
-    planned = None if clips is None else clip_plan(default_size(table), records, clips)
+    kept = out if (out / MARKER).is_file() else None  # an earlier build's clips
+    planned = None if clips is None else clip_plan(default_size(table), records, clips, kept)
     _check_replaceable(out)
     writable_folder(out, "site folder")
     staging = staging_folder(out)

@@ -9,7 +9,14 @@ and the worst model of the dataset climbing beside the expert, so the difference
 - Which model file: the closed loop's own, the run's architecture trained on the `next`
   variant of `trained_on`, loaded from the checkpoint the run left under its results folder
   (asked for by run key: `symbench.core.runs.trained_models.trained_model`): nothing is
-  retrained, and a missing checkpoint is an error naming it.
+  retrained, and a missing checkpoint is an error naming it, as is one whose content hash is
+  not the network the record's closed loop judged (`judged.checkpoint_sha256`: a model
+  trained again, by other code or on a CPU of another kernel class, is not the record's).
+- Kept clips: each clip is written with a sidecar (`.json` beside the `.webp`) naming what it
+  shows (the record's seal and the judged network's hash) and its caption. A build into an
+  existing site copies a clip whose sidecar names the same record and network when that
+  network's checkpoint is gone (results are not kept between machines): the same network
+  on the same reference, so the same climb.
 - Which climb: the first reference the evaluator tracked (`ClosedLoopSetup`, the evaluator's
   own: the first reference the expert holds), at the preset's headline PD fraction, the
   model in the evaluator's whole batch. The expert's side is the closed loop's oracle (the
@@ -26,7 +33,7 @@ from __future__ import annotations
 import json
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import pandas as pd
 from PIL import Image
@@ -55,6 +62,7 @@ from symbench.core.sim.tracking.render import (
 
 if TYPE_CHECKING:
     from symbench.core.data.dataset import Dataset
+    from symbench.core.training.trained_model import TrainedModel
 
 SPLIT = "iid"
 SCORE = COLUMNS[(CLOSED_LOOP, "pd_normalized_score")]
@@ -101,6 +109,61 @@ def choose(rows: pd.DataFrame, records: list[tuple[Path, RecordV1]]) -> list[Cho
     return [Choice(role, row_key(row), *shown[row_key(row)], by) for role, row in ends]
 
 
+@dataclass(frozen=True)
+class KeptClip:
+    """A clip an earlier build rendered of the same record and judged network."""
+
+    webp: bytes
+    caption: str
+
+
+def shows(record: RecordV1) -> dict[str, str] | None:
+    """What a clip of `record` shows: the record (its seal) and the network its closed loop
+    judged (its content hash); None for a record that does not name that network."""
+    judged = record.metrics[CLOSED_LOOP].get("judged") or {}
+    sha, seal = judged.get("checkpoint_sha256"), getattr(record, "seal", None)  # schema 1: none
+    return None if sha is None or seal is None else {"record_seal": seal, "checkpoint_sha256": sha}
+
+
+def _sidecar(path: Path) -> Path:
+    return path.with_suffix(".json")
+
+
+def kept_clip(site: Path, choice: Choice) -> KeptClip | None:
+    """The clip of `choice` in the built `site`, when its sidecar says it shows the same
+    record and judged network; None otherwise."""
+    record = choice.record
+    path = site / names.clip_file(record.robot, record.dataset.id, choice.role, record.model.name)
+    try:
+        sidecar = json.loads(_sidecar(path).read_text())
+        webp = path.read_bytes()
+    except (OSError, ValueError):
+        return None
+    if (
+        not isinstance(sidecar, dict)
+        or shows(record) is None
+        or sidecar.get("shows") != shows(record)
+    ):
+        return None
+    caption = sidecar.get("caption")
+    return KeptClip(webp, caption) if isinstance(caption, str) else None
+
+
+def judged_model(path: Path, record: RecordV1, results: Path) -> TrainedModel:
+    """The closed loop's model of `record`, loaded from under `results` and checked to be the
+    network the record judged."""
+    model = closed_loop_model(path, record, results).load()
+    expected = (shows(record) or {}).get("checkpoint_sha256")
+    if expected is not None and model.sha256() != expected:
+        raise SymbenchError(
+            f"the closed-loop checkpoint for the clip of {path} is not the network it judged "
+            f"(content hash {model.sha256()[:12]}... against {expected[:12]}...: trained "
+            "again, by other code or on a CPU of another kernel class); give --clips-from the "
+            "results folder of its run"
+        )
+    return model
+
+
 def closed_loop_model(path: Path, record: RecordV1, results: Path) -> StoredModel:
     """The closed loop's model of `record` (at `path`) under `results`, as the run left it;
     an error naming what is missing otherwise."""
@@ -119,17 +182,31 @@ def closed_loop_model(path: Path, record: RecordV1, results: Path) -> StoredMode
         ) from None
 
 
-# per (robot, dataset): each clip's choice with its model
-ClipPlan = dict[tuple[str, str], tuple[tuple[Choice, StoredModel], ...]]
+# per (robot, dataset): each clip's choice with its model, or the clip kept from a build
+ClipPlan = dict[tuple[str, str], tuple[tuple[Choice, "TrainedModel | KeptClip"], ...]]
 
 
-def clip_plan(table: pd.DataFrame, records: list[tuple[Path, RecordV1]], results: Path) -> ClipPlan:
+def clip_plan(
+    table: pd.DataFrame,
+    records: list[tuple[Path, RecordV1]],
+    results: Path,
+    kept: Path | None = None,
+) -> ClipPlan:
     """Per (robot, dataset) of the aggregate `table`: the clips' choices, each with its
-    model under `results`, all found before anything is rendered or written."""
+    judged model under `results` or, where that is missing or not the judged network, its
+    clip kept in the built site `kept`; all found before anything is rendered or written."""
+
+    def shown(choice: Choice) -> TrainedModel | KeptClip:
+        reused = None if kept is None else kept_clip(kept, choice)
+        try:
+            return judged_model(choice.path, choice.record, results)
+        except SymbenchError:
+            if reused is None:
+                raise
+            return reused
+
     return {
-        (str(robot), str(did)): tuple(
-            (c, closed_loop_model(c.path, c.record, results)) for c in choose(rows, records)
-        )
+        (str(robot), str(did)): tuple((c, shown(c)) for c in choose(rows, records))
         for (robot, did), rows in table.groupby(["robot", "dataset"], sort=True)
     }
 
@@ -150,26 +227,40 @@ class Scene:
     expert: list[Image.Image]  # the expert's labelled frames
 
 
-def draw_clips(planned: tuple[tuple[Choice, StoredModel], ...], site: Path) -> tuple[Clip, ...]:
-    """The clips of one board page (its part of `clip_plan`), written under `site`."""
-    if not planned:
-        return ()
-    models = [stored.load() for _, stored in planned]
-    dataset = _dataset(planned[0][0].record)  # the page's: one dataset
+def draw_clips(
+    planned: tuple[tuple[Choice, TrainedModel | KeptClip], ...], site: Path
+) -> tuple[Clip, ...]:
+    """The clips of one board page (its part of `clip_plan`), written under `site` with
+    their sidecars: kept ones copied, the others rendered."""
     scenes: dict[str, Scene] = {}
+    datasets: list[Dataset] = []  # the page's one dataset, loaded when a clip is rendered
+    clips = []
     try:
-        return tuple(
-            _clip(c, m, dataset, site, scenes) for (c, _), m in zip(planned, models, strict=True)
-        )
+        for choice, model in planned:
+            record = choice.record
+            path = names.clip_file(record.robot, record.dataset.id, choice.role, record.model.name)
+            if isinstance(model, KeptClip):
+                webp, caption = model.webp, model.caption
+            else:
+                datasets = datasets or [_dataset(record)]
+                webp, caption = _clip(choice, model, datasets[0], scenes)
+            write_bytes_atomic(site / path, webp)
+            sidecar = {"shows": shows(record), "caption": caption}
+            text = json.dumps(sidecar, indent=1, sort_keys=True) + "\n"
+            write_bytes_atomic(_sidecar(site / path), text.encode())
+            title = f"{choice.role.capitalize()} by {choice.ranked_by}: {record.model.name}"
+            clips.append(Clip(title, path, names.entry_page(choice.key), caption))
+        return tuple(clips)
     finally:
         for scene in scenes.values():
             scene.renderer.close()
 
 
 def _clip(
-    choice: Choice, model: Any, dataset: Dataset, site: Path, scenes: dict[str, Scene]
-) -> Clip:
-    """The clip of `choice`, whose closed loop tracked with `model` (a loaded `StoredModel`)."""
+    choice: Choice, model: TrainedModel, dataset: Dataset, scenes: dict[str, Scene]
+) -> tuple[bytes, str]:
+    """The clip of `choice` (WebP bytes) and its caption: the closed loop tracked again with
+    `model`, the network it judged."""
     record = choice.record
     setup = closed_loop_setup(record, dataset)
     headline = setup.headline
@@ -191,14 +282,7 @@ def _clip(
     ):
         failed = not result.attached and t >= result.time_to_failure_s
         frames.append(side_by_side(expert, labelled(frame, title, fell if failed else "", failed)))
-    path = names.clip_file(record.robot, record.dataset.id, choice.role, record.model.name)
-    write_bytes_atomic(site / path, webp(frames))
-    return Clip(
-        f"{choice.role.capitalize()} by {choice.ranked_by}: {record.model.name}",
-        path,
-        names.entry_page(choice.key),
-        _caption(choice, result, scenario.seconds, headline),
-    )
+    return webp(frames), _caption(choice, result, scenario.seconds, headline)
 
 
 def _scene(record: RecordV1, setup: ClosedLoopSetup, scenes: dict[str, Scene]) -> Scene:
