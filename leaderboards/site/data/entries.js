@@ -2019,6 +2019,511 @@ window.SYMBENCH_ENTRIES = {
   "split": "unseen-rotation",
   "title": "sdnn (acc, torch)"
  },
+ "magneto-climb-small-v7__converge__control-rotation__ffnn-leg__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--control-rotation",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__control-rotation__ffnn-leg__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "3",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.180 [0.173, 0.191]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.141 [0.135, 0.151]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.336 [0.311, 0.362]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "158 988",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "27.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "control-rotation",
+  "title": "ffnn-leg (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__control-rotation__ffnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--control-rotation",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__control-rotation__ffnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "4",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.416 [0.398, 0.438]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.327 [0.314, 0.344]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.03 [0.97, 1.12]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.29 [1.21, 1.37]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "150 796",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.027",
+    ""
+   ],
+   [
+    "steps",
+    "9 500 [8 500, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "25.6 [22.8, 27.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 4, patience 1",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "control-rotation",
+  "title": "ffnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__control-rotation__gnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--control-rotation",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__control-rotation__gnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.641 [0.570, 0.730]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.504 [0.447, 0.575]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.34 [1.12, 1.52]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.52 [1.41, 1.65]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.027",
+    ""
+   ],
+   [
+    "steps",
+    "9 900 [9 700, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "26.6 [25.8, 27.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 4, patience 1",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "control-rotation",
+  "title": "gnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__control-rotation__sdgnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--control-rotation",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__control-rotation__sdgnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.158 [0.151, 0.165]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.124 [0.119, 0.130]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "3.00 × 10⁻⁷ [2.80 × 10⁻⁷, 3.22 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "9 900 [9 700, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "26.6 [25.8, 27.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 4, patience 1",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "control-rotation",
+  "title": "sdgnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__control-rotation__sdnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--control-rotation",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__control-rotation__sdnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "1",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.129 [0.127, 0.132]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.102 [0.099, 0.104]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "2.95 × 10⁻⁷ [2.53 × 10⁻⁷, 3.34 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "27.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "control-rotation",
+  "title": "sdnn (acc, torch)"
+ },
  "magneto-climb-small-v7__converge__iid__ffnn-leg__acc__torch": {
   "board": "boards/magneto__magneto-climb-small-v7.html#converge--iid",
   "dataset": "magneto-climb-small-v7",
@@ -2522,6 +3027,511 @@ window.SYMBENCH_ENTRIES = {
   "protocol": "converge",
   "robot": "magneto",
   "split": "iid",
+  "title": "sdnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__unseen-rotation__ffnn-leg__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--unseen-rotation",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__unseen-rotation__ffnn-leg__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "3-4",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.607 [0.587, 0.625]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.170 [0.159, 0.185]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.236 [0.228, 0.243]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.476 [0.460, 0.490]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.729 [0.672, 0.796]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "0.615 [0.599, 0.632]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0759 [0.0704, 0.0803]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "158 988",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "27.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "unseen-rotation",
+  "title": "ffnn-leg (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__unseen-rotation__ffnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--unseen-rotation",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__unseen-rotation__ffnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "1.02 [0.97, 1.06]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.0540 [0.0436, 0.0633]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.0711 [0.0592, 0.0830]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.796 [0.757, 0.835]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.12 [1.00, 1.22]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.31 [1.24, 1.38]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "0.321 [0.292, 0.348]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0812 [0.0793, 0.0831]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "150 796",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.027",
+    ""
+   ],
+   [
+    "steps",
+    "9 100 [7 300, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "24.4 [19.2, 27.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 4, patience 1",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "unseen-rotation",
+  "title": "ffnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__unseen-rotation__gnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--unseen-rotation",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__unseen-rotation__gnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "3-4",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.618 [0.605, 0.628]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.107 [0.099, 0.117]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.151 [0.138, 0.169]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.484 [0.474, 0.493]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.18 [1.03, 1.34]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.49 [1.40, 1.58]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "0.465 [0.442, 0.498]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0739 [0.0721, 0.0756]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.027",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "27.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "unseen-rotation",
+  "title": "gnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__unseen-rotation__sdgnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--unseen-rotation",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__unseen-rotation__sdgnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.157 [0.154, 0.161]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.402 [0.390, 0.414]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.427 [0.414, 0.437]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.123 [0.121, 0.126]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "3.66 × 10⁻⁷ [2.93 × 10⁻⁷, 4.62 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "0.956 [0.933, 0.979]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0293 [0.0276, 0.0313]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "27.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "unseen-rotation",
+  "title": "sdgnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__unseen-rotation__sdnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--unseen-rotation",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__unseen-rotation__sdnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "1",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.129 [0.126, 0.133]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.410 [0.390, 0.431]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.428 [0.402, 0.456]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.101 [0.098, 0.105]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "2.63 × 10⁻⁷ [2.18 × 10⁻⁷, 3.09 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "0.959 [0.912, 1.003]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0270 [0.0255, 0.0289]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "27.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "unseen-rotation",
   "title": "sdnn (acc, torch)"
  },
  "nona-climb-small-v7__converge__control-rotation__ffnn-leg__acc__torch": {
