@@ -8,6 +8,7 @@ installed with apt-get when it is missing; the test fails, never skips, when tha
 
 from __future__ import annotations
 
+import html
 import io
 import json
 import os
@@ -247,9 +248,13 @@ def test_clips_are_rendered_encoded_and_shown(trained, tmp_path):
     done = _build(trained, tmp_path / "site")
     assert done.returncode == 0, done.stderr[-3000:]
     page = (tmp_path / "site" / f"boards/hexa__{HEXA}.html").read_text()
-    clips = sorted((tmp_path / "site" / "clips").iterdir())
+    clips = sorted((tmp_path / "site" / "clips").glob("*.webp"))
     assert len(clips) == 2  # the best and the worst of two models
     records = {r.model.name: r for _, r in load_records(trained / "results")}
+    for clip in clips:  # each with the sidecar that names what it shows
+        sidecar = json.loads(clip.with_suffix(".json").read_text())
+        assert sidecar["shows"] == shows(records[clip.stem.rsplit("-", 1)[1]])
+        assert sidecar["caption"] in " ".join(html.unescape(page).split())
     for clip in clips:
         model = clip.stem.rsplit("-", 1)[1]
         assert f'src="../clips/{clip.name}"' in page
