@@ -29,12 +29,32 @@ for kept in "$REPO"/leaderboards/pending/*/; do
     cp -n "$kept"*.json "$WT/$(basename "$kept")/"
 done
 
-sweep() {  # sweep OUTPUT ARGS...: once with $WORKERS workers, again with one if a worker died
+once() {  # once OUTPUT ARGS...: one sweep; again with one worker if a worker died
     local out=$1; shift
     (cd "$WT" && MUJOCO_GL=disable PYTHONPATH="$WT" "$PY" -m symbench sweep "$@" --output "$out" \
         --workers "${WORKERS:-2}") ||
     (cd "$WT" && MUJOCO_GL=disable PYTHONPATH="$WT" "$PY" -m symbench sweep "$@" --output "$out" \
         --workers 1)
+}
+
+# sweep OUTPUT --models LIST [--seeds LIST] ARGS... (--splits LIST among ARGS): a sweep per
+# model, split and pair of seeds, so that each of the two workers makes one run and ends. At
+# 7a8d9fb a sweep's worker keeps what its runs loaded: on magneto a worker reached 12 GB and
+# a one-worker sweep 24 GB (killed for memory, 2026-11-28), where each run alone fits.
+sweep() {
+    local out=$1 models=$3 seeds=0,1,2,3,4 splits=iid; shift 3
+    if [ "$1" = --seeds ]; then seeds=$2; shift 2; fi
+    local rest=() model split pair
+    while [ $# -gt 0 ]; do
+        if [ "$1" = --splits ]; then splits=$2; shift 2; else rest+=("$1"); shift; fi
+    done
+    for model in ${models//,/ }; do
+        for split in ${splits//,/ }; do
+            for pair in $(echo "$seeds" | tr , '\n' | paste -sd ',\n' -); do
+                once "$out" --models "$model" --splits "$split" --seeds "$pair" "${rest[@]}"
+            done
+        done
+    done
 }
 
 # 1-3. the small grid, robot by robot: a run's generalization evaluators train its model on
@@ -52,10 +72,10 @@ sweep results-matched --models $MODELS --robots nona,magneto --splits iid --para
 # 5. the JAX entries
 sweep results-jax --models sdnn,ffnn --backends jax --robots hexa --splits iid --evaluators $ALL
 # 6. the paper board (hexa): 50 000 cosine steps, 3 seeds
-sweep results-paper --models $MODELS --robots hexa --preset paper --protocol cosine \
-    --max-steps 50000 --seeds 0,1,2 --splits iid,unseen-rotation --evaluators $ALL
-sweep results-paper --models $MODELS --robots hexa --preset paper --protocol cosine \
-    --max-steps 50000 --seeds 0,1,2 --splits control-rotation,fraction-0.1 --evaluators $OPEN
+sweep results-paper --models $MODELS --seeds 0,1,2 --robots hexa --preset paper --protocol cosine \
+    --max-steps 50000 --splits iid,unseen-rotation --evaluators $ALL
+sweep results-paper --models $MODELS --seeds 0,1,2 --robots hexa --preset paper --protocol cosine \
+    --max-steps 50000 --splits control-rotation,fraction-0.1 --evaluators $OPEN
 # 7. the studies again on v7 (each publishes to leaderboards/studies/<name>-v7)
 sweep results-asymmetry --models sdnn,sdgnn,ffnn --robots hexa-asym-0.05,hexa-asym-0.1,hexa-asym-0.2 \
     --splits iid --evaluators torque-error,equivariance,data-symmetry

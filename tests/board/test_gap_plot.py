@@ -1,6 +1,7 @@
-"""The generalization gap: each model entry's test RMSE on unseen-rotation over its RMSE on
-the size-matched control (control-rotation), seed by seed, else over iid's; a third plot of
-the board page, absent with its reason when the splits are missing."""
+"""The generalization gap: each model entry's test RMSE on unseen-rotation (unseen-heading)
+over its RMSE on the size-matched control (control-rotation, control-heading), seed by seed,
+else over iid's; the third (fourth) plot of the board page, absent with its reason when the
+splits are missing."""
 
 from __future__ import annotations
 
@@ -73,6 +74,27 @@ def test_the_gap_plot_is_drawn_with_its_result_in_words(tmp_path, make_record):
         "smallest gap: ffnn (acc, torch) at protocol paper. The largest gap: sdnn (acc, torch) "
         "at protocol paper."
     )
+
+
+def test_unseen_headings_have_a_gap_plot_of_their_own_against_their_control(tmp_path, make_record):
+    for model, by_split in RMSE.items():  # the rotation splits' numbers, as headings
+        for held_out, control in (
+            ("unseen-heading", "unseen-rotation"),
+            ("control-heading", "iid"),
+        ):
+            for seed, rmse in enumerate(by_split[control]):
+                record = make_record(model=model, split=held_out, seed=seed, rmse=rmse)
+                write_record(record, tmp_path / f"{model}-{held_out}-{seed}.json")
+    table = aggregate(load_records(tmp_path))
+    gaps = generalization_gaps(table, "unseen-heading")
+    assert gaps is not None and gaps.control == "control-heading"
+    ffnn = next(s for s in gaps.series if s.model == "ffnn").points["paper"]
+    assert ffnn.seeds == pytest.approx((2.0, 2.2, 2.4))
+    rotation, heading = draw_plots(table, "hexa", table.dataset[0], tmp_path / "site")[2:]
+    assert rotation.path is None and heading.title == "Generalization gap, unseen-heading"
+    assert heading.path.endswith("-generalization-gap-unseen-heading.svg")
+    assert "over its test RMSE on control-heading" in heading.caption
+    assert "the unseen slope headings cost nothing" in heading.caption
 
 
 @pytest.mark.parametrize("splits", [["iid", "control-rotation"], ["unseen-rotation"]])

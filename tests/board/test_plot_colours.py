@@ -92,8 +92,8 @@ def model_of(label: str) -> str:
 
 
 def write_page(folder: Path, make_record, robot: str, models: list[str]) -> None:
-    """Records of `models` on the splits of all three site plots, the closed loop on iid."""
-    splits = ("fraction-0.5", "iid", "unseen-rotation")
+    """Records of `models` on the splits of all four site plots, the closed loop on iid."""
+    splits = ("fraction-0.5", "iid", "unseen-rotation", "unseen-heading")
     for i, model in enumerate(models):
         for split in splits:
             for seed in range(3):
@@ -120,7 +120,7 @@ def test_every_plot_of_every_page_draws_a_model_in_its_colour(tmp_path, make_rec
         rows = table[table.robot == robot]
         plots = site_plots.draw_plots(rows, robot, rows.dataset.iloc[0], tmp_path / "site")
         assert all(p.path is not None for p in plots)
-    assert len(figures) == 6
+    assert len(figures) == 8
     seen: dict[str, set[str]] = {}
     for fig in figures:
         for label, colour in drawn_colours(fig).items():

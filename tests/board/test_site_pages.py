@@ -145,23 +145,22 @@ def test_protocols_have_their_own_tables_and_the_filter_lists_the_models(site, r
 def test_plots_are_drawn_or_their_absence_explained(site):
     hexa, nona = read_page(site / HEXA_PAGE), read_page(site / NONA_PAGE)
     images = sorted(link for link in hexa.links if link.endswith(".svg"))
-    assert images == [
+    assert images == [  # unseen-heading against iid: the fixture has no control-heading
         f"../boards/hexa__{HEXA}-closed-loop.svg",
+        f"../boards/hexa__{HEXA}-generalization-gap-unseen-heading.svg",
         f"../boards/hexa__{HEXA}-sample-efficiency.svg",
     ]
     for image in images:
         assert (site / "boards" / image).read_bytes().startswith(SVG)
     assert not any(link.endswith(".svg") for link in nona.links)
-    no_gap = (
-        "No plot: no model has records of both unseen-rotation and its control or iid on "
-        "this dataset."
-    )
+    no_gap = "No plot: no model has records of both {} and its control or iid on this dataset."
     assert nona.texts["absent"] == [
         "No plot: no record of a fraction-F split on this dataset.",
         "No plot: no record on this dataset has closed-loop metrics (run --full).",
-        no_gap,
+        no_gap.format("unseen-rotation"),
+        no_gap.format("unseen-heading"),
     ]
-    assert hexa.texts["absent"] == [no_gap]
+    assert hexa.texts["absent"] == [no_gap.format("unseen-rotation")]
 
 
 def entry(site: Path, split: str, model: str) -> Page:
@@ -362,7 +361,8 @@ def test_the_plots_alt_texts_say_which_model_is_best(site):
         return re.findall(r'<img src="[^"]*\.svg" alt="([^"]*)"', page.read_text())
 
     shown = alts(site / HEXA_PAGE)
-    assert len(shown) == 2  # sample efficiency and closed loop; no control split: no gap
+    # sample efficiency, closed loop, unseen-heading's gap against iid; no unseen-rotation
+    assert len(shown) == 3
     assert "sdnn (acc, torch, converge) has the lowest error at every fraction" in html.unescape(
         shown[0]
     )

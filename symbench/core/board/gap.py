@@ -1,8 +1,9 @@
-"""The generalization gap of each model entry: its test RMSE on `unseen-rotation` over its
-test RMSE on the split's size-matched control (`control-rotation`: as many training climbs,
-the same seed), seed by seed; about 1 when the unseen yaws are no news to the model. Records
-without the control are compared with `iid` instead, which trains on more climbs, so that
-ratio overstates the gap; the plot names which one it divides by."""
+"""The generalization gap of each model entry: its test RMSE on a held-out split
+(`unseen-rotation`, `unseen-heading`) over its test RMSE on the split's size-matched control
+(`control-rotation`, `control-heading`: as many training climbs, the same seed), seed by
+seed; about 1 when the unseen orientations are no news to the model. Records without the
+control are compared with `iid` instead, which trains on more climbs, so that ratio
+overstates the gap; the plot names which one it divides by."""
 
 from __future__ import annotations
 
@@ -16,7 +17,7 @@ from symbench.core.board.series import ENTRY, label_of
 from symbench.core.board.statistics import mean_interval
 from symbench.core.data.splits import control_of
 
-GAP_SPLIT = "unseen-rotation"
+HELD_OUT_SPLITS = ("unseen-rotation", "unseen-heading")  # a gap plot each
 
 
 @dataclass(frozen=True)
@@ -41,12 +42,12 @@ def ratio(held_out: dict[int, float], control: dict[int, float]) -> Spread | Non
     return Spread(float(np.mean(ratios)), low, high, tuple(ratios))
 
 
-def generalization_gaps(rows: pd.DataFrame) -> Gaps | None:
-    """The gaps of the aggregate's `rows` of one robot and dataset; None without records of
-    `unseen-rotation` and of its control or iid for one model entry."""
+def generalization_gaps(rows: pd.DataFrame, held_out: str = HELD_OUT_SPLITS[0]) -> Gaps | None:
+    """The gaps on `held_out` of the aggregate's `rows` of one robot and dataset; None without
+    records of `held_out` and of its control or iid for one model entry."""
     splits = set(rows.split)
-    control = next((s for s in (control_of(GAP_SPLIT), "iid") if s in splits), None)
-    if GAP_SPLIT not in splits or control is None:
+    control = next((s for s in (control_of(held_out), "iid") if s in splits), None)
+    if held_out not in splits or control is None:
         return None
     keys = [*ENTRY, "protocol"]
     base = {
@@ -54,7 +55,7 @@ def generalization_gaps(rows: pd.DataFrame) -> Gaps | None:
     }
     models: dict[str, str] = {}  # label -> model
     points: dict[str, dict[str, Spread]] = {}  # label -> protocol -> gap
-    for _, row in rows[rows.split == GAP_SPLIT].sort_values(keys).iterrows():
+    for _, row in rows[rows.split == held_out].sort_values(keys).iterrows():
         other = base.get(tuple(row[keys]))
         found = None if other is None else ratio(row.per_seed["rmse_Nm"], other)
         if found is not None:

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from symbench.core.board.gap import GAP_SPLIT, generalization_gaps
+from symbench.core.board.gap import HELD_OUT_SPLITS, generalization_gaps
 from symbench.core.board.leaderboard import COLUMNS
 from symbench.core.board.plot_files import write_svg
 from symbench.core.board.plots import bars_figure, sample_efficiency_figure
@@ -42,7 +42,7 @@ def draw_plots(rows: pd.DataFrame, robot: str, dataset: str, site: Path) -> tupl
     return (
         _sample_efficiency(rows, robot, dataset, site),
         _closed_loop(rows, robot, dataset, site),
-        _generalization_gap(rows, robot, dataset, site),
+        *(_generalization_gap(rows, robot, dataset, site, split) for split in HELD_OUT_SPLITS),
     )
 
 
@@ -90,32 +90,37 @@ def _closed_loop(rows: pd.DataFrame, robot: str, dataset: str, site: Path) -> Pl
     )
 
 
-def _generalization_gap(rows: pd.DataFrame, robot: str, dataset: str, site: Path) -> Plot:
-    title = "Generalization gap"
-    gaps = generalization_gaps(rows)
+def _generalization_gap(
+    rows: pd.DataFrame, robot: str, dataset: str, site: Path, held_out: str
+) -> Plot:
+    # the first held-out split's plot keeps the file name it had before the second came
+    first = held_out == HELD_OUT_SPLITS[0]
+    title = "Generalization gap" + ("" if first else f", {held_out}")
+    gaps = generalization_gaps(rows, held_out)
     if gaps is None:
         return Plot(
             title,
             None,
-            f"No plot: no model has records of both {GAP_SPLIT} and its control or iid "
+            f"No plot: no model has records of both {held_out} and its control or iid "
             "on this dataset.",
         )
-    path = names.plot_file(robot, dataset, "generalization-gap")
-    label = f"test RMSE on {GAP_SPLIT} / on {gaps.control}"
+    path = names.plot_file(robot, dataset, "generalization-gap" + ("" if first else f"-{held_out}"))
+    label = f"test RMSE on {held_out} / on {gaps.control}"
     figure = bars_figure(gaps.series, gaps.protocols, label, f"{robot}: generalization gap", 1.0)
     write_svg(figure, site / path)
     result = ranking(gaps.series, gaps.protocols, "protocol", "smallest gap", "largest gap", True)
+    what = "rotations" if held_out == "unseen-rotation" else "slope headings"
     return Plot(
         title,
         path,
-        f"Each model's test RMSE on {GAP_SPLIT} over its test RMSE on {gaps.control}, seed by "
+        f"Each model's test RMSE on {held_out} over its test RMSE on {gaps.control}, seed by "
         "seed (mean, 95 % bootstrap interval and each seed's ratio), per training protocol; "
-        "1 (dashed): the unseen rotations cost nothing."
+        f"1 (dashed): the unseen {what} cost nothing."
         + (
             ""
             if gaps.control != "iid"
             else " No record of the size-matched control: iid trains on more climbs, so "
             "this ratio overstates the gap."
         ),
-        f"The ratio of test RMSE on {GAP_SPLIT} to {gaps.control} per protocol. {result}",
+        f"The ratio of test RMSE on {held_out} to {gaps.control} per protocol. {result}",
     )
