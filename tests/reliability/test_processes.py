@@ -152,6 +152,19 @@ def test_run_each_reruns_lost_items_alone_and_names_those_that_die_alone(tmp_pat
     assert sorted(results) == [0, 1, 4, 16, 25]
 
 
+def _pid(_: int) -> int:
+    return os.getpid()
+
+
+def test_one_each_gives_every_item_a_process_of_its_own():
+    """What a run leaves in memory (12 GB in a worker that made many) cannot add up; without
+    `one_each` the two workers take every item (which of them, the scheduler says)."""
+    for one_each, processes in ((True, {4}), (False, {1, 2})):
+        pids: list[int] = []
+        run_each(_pid, range(4), 2, pids.append, one_each=one_each)
+        assert len(pids) == 4 and len(set(pids)) in processes
+
+
 def test_a_ray_address_where_no_cluster_answers_is_an_error_within_seconds(
     smoke_hexa, home, tmp_path
 ):

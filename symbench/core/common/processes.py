@@ -49,18 +49,21 @@ def run_each(
     workers: int,
     on_done: Callable[[Any], None],
     environment: Callable[[], contextlib.AbstractContextManager] = contextlib.nullcontext,
+    one_each: bool = False,
 ) -> None:
     """`fn(item)` for every item in `workers` spawned processes, calling `on_done` with each
     result as it comes; the processes start inside `environment()` (their environment
-    variables, say). An exception (Ctrl-C included) cancels what has not started.
+    variables, say), and with `one_each` a process ends after one item, so that what an item
+    leaves in memory never adds up over items (heavy items: runs, trainings). An exception
+    (Ctrl-C included) cancels what has not started.
 
     A worker that dies takes its pool with it, and every item then under way: those are run
     again afterwards, one at a time in a pool of their own (two heavy items at once are the
     usual cause), and the others go on in a fresh pool meanwhile; the items that die even
     alone are raised as `WorkerDied`, after everything else has run."""
-    lost = _run_in_pools(fn, list(items), workers, on_done, environment)
+    lost = _run_in_pools(fn, list(items), workers, on_done, environment, one_each)
     if lost:
-        lost = _run_in_pools(fn, lost, 1, on_done, environment)
+        lost = _run_in_pools(fn, lost, 1, on_done, environment, one_each)
     if lost:
         raise WorkerDied(lost)
 
@@ -71,13 +74,17 @@ def _run_in_pools(
     workers: int,
     on_done: Callable[[Any], None],
     environment: Callable[[], contextlib.AbstractContextManager],
+    one_each: bool,
 ) -> list[Any]:
     """Runs `items`, at most `workers` under way at once, so that the items under way when a
     worker dies are known; returns them (the rest ran in a fresh pool)."""
     queue, lost = list(reversed(items)), list[Any]()
     while queue:
         pool = ProcessPoolExecutor(
-            workers, mp_context=multiprocessing.get_context("spawn"), initializer=exit_with_parent
+            workers,
+            mp_context=multiprocessing.get_context("spawn"),
+            initializer=exit_with_parent,
+            max_tasks_per_child=1 if one_each else None,
         )
         try:
             under_way: dict[Future, Any] = {}

@@ -133,7 +133,7 @@ def train_ahead(
 
     quiet = replace(spec, progress=False, workers=1)
     try:
-        run_each(_fit_in_worker, [(quiet, job) for job in jobs], spec.workers, done)
+        run_each(_fit_in_worker, [(quiet, job) for job in jobs], spec.workers, done, one_each=True)
     except WorkerDied as exc:
         raise SymbenchError(
             f"a worker process died training {len(exc.items)} model(s), even alone (out of "
