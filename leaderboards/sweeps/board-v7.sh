@@ -38,7 +38,7 @@ once() {  # once OUTPUT ARGS...: one sweep; again with one worker if a worker di
 }
 
 # sweep OUTPUT --models LIST [--seeds LIST] ARGS... (--splits LIST among ARGS): a sweep per
-# model, split and pair of seeds, so that each of the two workers makes one run and ends. At
+# split, model and pair of seeds, so that each of the two workers makes one run and ends. At
 # 7a8d9fb a sweep's worker keeps what its runs loaded: on magneto a worker reached 12 GB and
 # a one-worker sweep 24 GB (killed for memory, 2026-11-28), where each run alone fits.
 sweep() {
@@ -48,8 +48,8 @@ sweep() {
     while [ $# -gt 0 ]; do
         if [ "$1" = --splits ]; then splits=$2; shift 2; else rest+=("$1"); shift; fi
     done
-    for model in ${models//,/ }; do
-        for split in ${splits//,/ }; do
+    for split in ${splits//,/ }; do  # a split's every model and seed first: publishable
+        for model in ${models//,/ }; do
             for pair in $(echo "$seeds" | tr , '\n' | paste -sd ',\n' -); do
                 once "$out" --models "$model" --splits "$split" --seeds "$pair" "${rest[@]}"
             done
