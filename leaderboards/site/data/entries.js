@@ -3029,6 +3029,511 @@ window.SYMBENCH_ENTRIES = {
   "split": "control-rotation",
   "title": "sdnn (acc, torch)"
  },
+ "magneto-climb-small-v7__converge__fraction-0.1__ffnn-leg__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--fraction-0-1",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__fraction-0.1__ffnn-leg__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "3",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.491 [0.456, 0.524]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.386 [0.356, 0.412]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.639 [0.595, 0.682]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "158 988",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "175",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 4, patience 1",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "fraction-0.1",
+  "title": "ffnn-leg (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__fraction-0.1__ffnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--fraction-0-1",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__fraction-0.1__ffnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "4-5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "1.07 [0.99, 1.15]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.842 [0.778, 0.906]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.22 [1.15, 1.29]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.24 [1.17, 1.30]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "150 796",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.027",
+    ""
+   ],
+   [
+    "steps",
+    "9 500 [8 500, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "166 [149, 175]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3, patience 2",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "fraction-0.1",
+  "title": "ffnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__fraction-0.1__gnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--fraction-0-1",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__fraction-0.1__gnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "4-5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "1.19 [1.15, 1.23]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.935 [0.910, 0.962]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.62 [1.52, 1.72]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.62 [1.51, 1.73]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.027",
+    ""
+   ],
+   [
+    "steps",
+    "4 900 [3 500, 7 500]",
+    ""
+   ],
+   [
+    "epochs",
+    "85.6 [61.0, 131.2]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 1, patience 4",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "fraction-0.1",
+  "title": "gnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__fraction-0.1__sdgnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--fraction-0-1",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__fraction-0.1__sdgnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "1-2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.300 [0.283, 0.315]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.236 [0.223, 0.247]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "3.98 × 10⁻⁷ [3.54 × 10⁻⁷, 4.31 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "9 200 [8 500, 9 900]",
+    ""
+   ],
+   [
+    "epochs",
+    "161 [149, 173]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 1, patience 4",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "fraction-0.1",
+  "title": "sdgnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__fraction-0.1__sdnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--fraction-0-1",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__fraction-0.1__sdnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "1-2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.286 [0.274, 0.296]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.224 [0.216, 0.233]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "2.94 × 10⁻⁷ [2.52 × 10⁻⁷, 3.32 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "175",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "fraction-0.1",
+  "title": "sdnn (acc, torch)"
+ },
  "magneto-climb-small-v7__converge__iid__ffnn-leg__acc__torch": {
   "board": "boards/magneto__magneto-climb-small-v7.html#converge--iid",
   "dataset": "magneto-climb-small-v7",
