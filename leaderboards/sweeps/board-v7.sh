@@ -18,6 +18,7 @@ ALL=torque-error,equivariance,invariance,generalization,closed-loop,image-overla
 OPEN=torque-error,equivariance,invariance,generalization,image-overlap,generalization-gap
 FRACTIONS=fraction-0.1,fraction-0.25,fraction-0.5,fraction-0.75
 
+[ -x "$PY" ] || make -C "$REPO" .venv/.installed  # a fresh machine: the environment first
 [ -d "$WT" ] || git -C "$REPO" worktree add --detach "$WT" "$COMMIT"
 [ "$(git -C "$WT" rev-parse --short=7 HEAD)" = "$COMMIT" ] || { echo "$WT is not at $COMMIT" >&2; exit 1; }
 [ -z "$(git -C "$WT" status --porcelain --untracked-files=no)" ] || { echo "$WT is not clean" >&2; exit 1; }
