@@ -3534,6 +3534,1016 @@ window.SYMBENCH_ENTRIES = {
   "split": "fraction-0.1",
   "title": "sdnn (acc, torch)"
  },
+ "magneto-climb-small-v7__converge__fraction-0.25__ffnn-leg__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--fraction-0-25",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__fraction-0.25__ffnn-leg__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "3",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.283 [0.262, 0.308]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.222 [0.205, 0.242]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.489 [0.435, 0.532]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "158 988",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
+    "steps",
+    "9 400 [8 200, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "64.0 [56.0, 68.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 2, patience 3",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "fraction-0.25",
+  "title": "ffnn-leg (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__fraction-0.25__ffnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--fraction-0-25",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__fraction-0.25__ffnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "4",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.750 [0.689, 0.812]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.589 [0.542, 0.639]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.08 [1.03, 1.13]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.37 [1.26, 1.47]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "150 796",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.027",
+    ""
+   ],
+   [
+    "steps",
+    "7 100 [4 900, 9 200]",
+    ""
+   ],
+   [
+    "epochs",
+    "48.6 [33.6, 63.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 1, patience 4",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "fraction-0.25",
+  "title": "ffnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__fraction-0.25__gnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--fraction-0-25",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__fraction-0.25__gnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "1.03 [1.02, 1.05]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.810 [0.796, 0.824]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.38 [1.25, 1.49]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.50 [1.44, 1.57]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.027",
+    ""
+   ],
+   [
+    "steps",
+    "7 300 [5 800, 8 800]",
+    ""
+   ],
+   [
+    "epochs",
+    "49.6 [39.2, 60.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 1, patience 4",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "fraction-0.25",
+  "title": "gnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__fraction-0.25__sdgnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--fraction-0-25",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__fraction-0.25__sdgnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.201 [0.194, 0.208]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.158 [0.152, 0.163]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "3.63 × 10⁻⁷ [2.98 × 10⁻⁷, 4.30 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "68.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "fraction-0.25",
+  "title": "sdgnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__fraction-0.25__sdnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--fraction-0-25",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__fraction-0.25__sdnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "1",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.180 [0.174, 0.186]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.142 [0.136, 0.147]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "2.43 × 10⁻⁷ [2.22 × 10⁻⁷, 2.64 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "68.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "fraction-0.25",
+  "title": "sdnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__fraction-0.5__ffnn-leg__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--fraction-0-5",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__fraction-0.5__ffnn-leg__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "3",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.204 [0.199, 0.207]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.160 [0.155, 0.163]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.371 [0.322, 0.451]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "158 988",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "34.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "fraction-0.5",
+  "title": "ffnn-leg (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__fraction-0.5__ffnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--fraction-0-5",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__fraction-0.5__ffnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "4",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.502 [0.460, 0.552]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.394 [0.362, 0.433]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.11 [1.05, 1.16]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.32 [1.24, 1.42]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "150 796",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.027",
+    ""
+   ],
+   [
+    "steps",
+    "9 400 [8 200, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "32.0 [28.0, 34.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 4, patience 1",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "fraction-0.5",
+  "title": "ffnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__fraction-0.5__gnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--fraction-0-5",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__fraction-0.5__gnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.812 [0.723, 0.908]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.638 [0.567, 0.717]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.24 [1.02, 1.46]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.48 [1.41, 1.55]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.027",
+    ""
+   ],
+   [
+    "steps",
+    "8 800 [6 400, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "29.8 [21.4, 34.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3, patience 2",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "fraction-0.5",
+  "title": "gnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__fraction-0.5__sdgnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--fraction-0-5",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__fraction-0.5__sdgnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.166 [0.157, 0.174]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.130 [0.123, 0.137]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "3.35 × 10⁻⁷ [2.98 × 10⁻⁷, 3.66 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "34.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "fraction-0.5",
+  "title": "sdgnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__fraction-0.5__sdnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--fraction-0-5",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__fraction-0.5__sdnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "1",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.138 [0.132, 0.145]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.109 [0.103, 0.114]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "2.55 × 10⁻⁷ [2.29 × 10⁻⁷, 2.79 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "34.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "fraction-0.5",
+  "title": "sdnn (acc, torch)"
+ },
  "magneto-climb-small-v7__converge__iid__ffnn-leg__acc__torch": {
   "board": "boards/magneto__magneto-climb-small-v7.html#converge--iid",
   "dataset": "magneto-climb-small-v7",
