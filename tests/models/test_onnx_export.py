@@ -44,7 +44,9 @@ def test_an_export_of_fixed_batch_size_predicts_the_models_torques_at_that_size(
     predict = onnx_predictor((tmp_path / "model.onnx").read_bytes(), model.dims.keys)
     inputs = parity_inputs(model, 3)
     np.testing.assert_allclose(predict(inputs), model.predict(inputs), rtol=1e-4, atol=1e-5)
-    with pytest.raises(Exception, match="(?i)dimension|shape"):
+    with pytest.raises(
+        SymbenchError, match=r"of shape \(3, .*a fixed batch of 3 rows\); got shape \(1, "
+    ):
         predict({k: v[:1] for k, v in inputs.items()})
 
 
@@ -58,6 +60,15 @@ def test_the_export_predicts_the_models_torques_at_any_batch_size(name, tmp_path
         expected = model.predict(inputs)
         assert expected.shape == (rows, 6, 3)
         np.testing.assert_allclose(predict(inputs), expected, rtol=1e-4, atol=1e-5)
+
+
+def test_sdnn_is_exported_with_its_normalization_folded_into_its_layers():
+    model = trained("sdnn")
+    exported = onnx.load_from_string(
+        onnx_bytes(model.entry, model.dims, {}, model.params, model.normalizer)
+    )
+    ops = {node.op_type for node in exported.graph.node}
+    assert not ops & {"Sub", "Div", "Mul"}, ops
 
 
 def test_the_file_names_the_model_it_was_exported_from(tmp_path):
