@@ -4544,6 +4544,511 @@ window.SYMBENCH_ENTRIES = {
   "split": "fraction-0.5",
   "title": "sdnn (acc, torch)"
  },
+ "magneto-climb-small-v7__converge__fraction-0.75__ffnn-leg__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--fraction-0-75",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__fraction-0.75__ffnn-leg__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "3",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.176 [0.172, 0.183]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.138 [0.135, 0.144]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.426 [0.317, 0.590]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "158 988",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "23.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "fraction-0.75",
+  "title": "ffnn-leg (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__fraction-0.75__ffnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--fraction-0-75",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__fraction-0.75__ffnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "4",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.391 [0.374, 0.418]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.308 [0.293, 0.329]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.03 [0.86, 1.19]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.30 [1.26, 1.34]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "150 796",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.027",
+    ""
+   ],
+   [
+    "steps",
+    "9 400 [8 200, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "21.6 [18.8, 23.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 4, patience 1",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "fraction-0.75",
+  "title": "ffnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__fraction-0.75__gnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--fraction-0-75",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__fraction-0.75__gnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.538 [0.513, 0.578]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.423 [0.402, 0.455]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.12 [0.96, 1.26]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.59 [1.43, 1.72]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.027",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "23.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "fraction-0.75",
+  "title": "gnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__fraction-0.75__sdgnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--fraction-0-75",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__fraction-0.75__sdgnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.155 [0.148, 0.162]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.122 [0.116, 0.128]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "3.08 × 10⁻⁷ [2.81 × 10⁻⁷, 3.34 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "23.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "fraction-0.75",
+  "title": "sdgnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__fraction-0.75__sdnn__acc__torch": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--fraction-0-75",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__fraction-0.75__sdnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "1",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.123 [0.117, 0.128]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0965 [0.0913, 0.1004]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "2.44 × 10⁻⁷ [2.22 × 10⁻⁷, 2.66 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "23.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "fraction-0.75",
+  "title": "sdnn (acc, torch)"
+ },
  "magneto-climb-small-v7__converge__iid__ffnn-leg__acc__torch": {
   "board": "boards/magneto__magneto-climb-small-v7.html#converge--iid",
   "dataset": "magneto-climb-small-v7",
