@@ -86,16 +86,16 @@ def _fold_input(graph: _Graph, name: str) -> bool:
         add = graph.only_consumer(matmul.output[0], "Add")
         weight = graph.constants.get(matmul.input[1])
         bias = None if add is None else graph.split(add)
-        if weight is None or weight.ndim != 2 or bias is None:
+        if weight is None or weight.ndim != 2 or add is None or bias is None:
             return False
         if not _per_feature(mean[1], std[1], weight.shape[0]):
             return False
         layers.append((matmul, weight, add, bias[1]))
     if not layers:
         return False
-    for matmul, weight, add, bias in layers:
+    for matmul, weight, add, old_bias in layers:
         graph.replace_constant(matmul, weight / std[1][:, None])
-        graph.replace_constant(add, bias - (mean[1] / std[1]) @ weight)
+        graph.replace_constant(add, old_bias - (mean[1] / std[1]) @ weight)
         matmul.input[0] = name
     graph.remove(sub, div)
     return True
