@@ -38,6 +38,33 @@ once() {  # once OUTPUT ARGS...: one sweep; again with one worker if a worker di
         --workers 1)
 }
 
+# recorded OUTPUT SPLIT MODEL SEEDS ARGS...: whether OUTPUT holds the record of every robot
+# (--robots among ARGS) and seed, by file name (<robot>-climb-<preset>-v7__<preset>__<split>__
+# <model>__<variant>__<backend>__<protocol>[__p<N>]__seed<S>.json), so that a resumed sweep
+# passes a finished group without starting Python (3 s a group, 10 to 20 minutes a session).
+# A name it does not foresee only means the sweep is asked, and finds the records itself.
+recorded() {
+    local out=$1 split=$2 model=$3 seeds=$4; shift 4
+    local robots="" preset=small backend=torch protocol=converge size="" robot seed
+    while [ $# -gt 0 ]; do
+        case $1 in
+            --robots) robots=$2; shift 2 ;;
+            --preset) preset=$2; shift 2 ;;
+            --backends) backend=$2; shift 2 ;;
+            --protocol) protocol=$2; shift 2 ;;
+            --parameters) size=__p$2; shift 2 ;;
+            *) shift ;;
+        esac
+    done
+    [ -n "$robots" ] || return 1
+    for robot in ${robots//,/ }; do
+        for seed in ${seeds//,/ }; do
+            compgen -G "$WT/$out/$robot-climb-$preset-v7__${preset}__${split}__${model}__*__${backend}__$protocol${size}__seed$seed.json" \
+                > /dev/null || return 1
+        done
+    done
+}
+
 # sweep OUTPUT --models LIST [--seeds LIST] ARGS... (--splits LIST among ARGS): a sweep per
 # split, model and pair of seeds, so that each of the two workers makes one run and ends. At
 # 7a8d9fb a sweep's worker keeps what its runs loaded: on magneto a worker reached 12 GB and
@@ -52,6 +79,7 @@ sweep() {
     for split in ${splits//,/ }; do  # a split's every model and seed first: publishable
         for model in ${models//,/ }; do
             for pair in $(echo "$seeds" | tr , '\n' | paste -sd ',\n' -); do
+                recorded "$out" "$split" "$model" "$pair" "${rest[@]}" && continue
                 once "$out" --models "$model" --splits "$split" --seeds "$pair" "${rest[@]}"
             done
         done
