@@ -1,4 +1,509 @@
 window.SYMBENCH_ENTRIES = {
+ "hexa-climb-small-v7__converge__control-heading__ffnn-leg__acc__torch": {
+  "board": "boards/hexa__hexa-climb-small-v7.html#converge--control-heading",
+  "dataset": "hexa-climb-small-v7",
+  "entry": "entries/hexa-climb-small-v7__converge__control-heading__ffnn-leg__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "3",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.127 [0.119, 0.133]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.162 [0.152, 0.171]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.786 [0.703, 0.870]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "172 306",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "9 000 [8 100, 9 900]",
+    ""
+   ],
+   [
+    "epochs",
+    "23.4 [20.8, 25.8]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 2, patience 3",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "hexa",
+  "split": "control-heading",
+  "title": "ffnn-leg (acc, torch)"
+ },
+ "hexa-climb-small-v7__converge__control-heading__ffnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-small-v7.html#converge--control-heading",
+  "dataset": "hexa-climb-small-v7",
+  "entry": "entries/hexa-climb-small-v7__converge__control-heading__ffnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "4-5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.284 [0.263, 0.305]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.363 [0.337, 0.389]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.13 [0.97, 1.25]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.38 [1.25, 1.55]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "157 970",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.027",
+    ""
+   ],
+   [
+    "steps",
+    "9 000 [7 000, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "23.4 [18.2, 26.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3, patience 2",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "hexa",
+  "split": "control-heading",
+  "title": "ffnn (acc, torch)"
+ },
+ "hexa-climb-small-v7__converge__control-heading__gnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-small-v7.html#converge--control-heading",
+  "dataset": "hexa-climb-small-v7",
+  "entry": "entries/hexa-climb-small-v7__converge__control-heading__gnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "4-5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.257 [0.242, 0.270]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.328 [0.308, 0.346]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.08 [0.98, 1.22]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.58 [1.48, 1.69]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.009",
+    ""
+   ],
+   [
+    "steps",
+    "9 600 [8 800, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "25.0 [23.0, 26.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 4, patience 1",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "hexa",
+  "split": "control-heading",
+  "title": "gnn (acc, torch)"
+ },
+ "hexa-climb-small-v7__converge__control-heading__sdgnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-small-v7.html#converge--control-heading",
+  "dataset": "hexa-climb-small-v7",
+  "entry": "entries/hexa-climb-small-v7__converge__control-heading__sdgnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0623 [0.0583, 0.0663]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0795 [0.0747, 0.0843]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "3.33 × 10⁻⁷ [3.01 × 10⁻⁷, 3.64 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "26.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "hexa",
+  "split": "control-heading",
+  "title": "sdgnn (acc, torch)"
+ },
+ "hexa-climb-small-v7__converge__control-heading__sdnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-small-v7.html#converge--control-heading",
+  "dataset": "hexa-climb-small-v7",
+  "entry": "entries/hexa-climb-small-v7__converge__control-heading__sdnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "1",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0501 [0.0478, 0.0524]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0640 [0.0612, 0.0668]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "3.43 × 10⁻⁷ [3.12 × 10⁻⁷, 3.70 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0135",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "26.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "hexa",
+  "split": "control-heading",
+  "title": "sdnn (acc, torch)"
+ },
  "hexa-climb-small-v7__converge__control-rotation__ffnn-leg__acc__torch": {
   "board": "boards/hexa__hexa-climb-small-v7.html#converge--control-rotation",
   "dataset": "hexa-climb-small-v7",
