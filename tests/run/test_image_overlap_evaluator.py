@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from types import SimpleNamespace
 
+from symbench.core.runs.overlap_cache import cached_split_overlap
 from symbench.plugins.evaluators import image_overlap
 
 # smoke's grid on hexa: yaws 0 and 180 (an image under C6) at headings 0 and 180 (images
@@ -13,9 +14,13 @@ from symbench.plugins.evaluators import image_overlap
 _MOTION = {0.0: "a", 180.0: "a", 250.0: "b"}
 
 
-def test_the_record_says_which_test_climbs_are_images_of_training_climbs(simulated_smoke_hexa):
+def test_the_record_says_which_test_climbs_are_images_of_training_climbs(
+    simulated_smoke_hexa, tmp_path
+):
     dataset = simulated_smoke_hexa
-    context = SimpleNamespace(dataset=dataset, split="iid", seed=0)
+    context = SimpleNamespace(
+        image_overlap=lambda: cached_split_overlap(dataset, "iid", 0, tmp_path)
+    )
     out = image_overlap.evaluate(context)
     parts = dataset.split_indices("iid", 0)
     yaw = {i: s["yaw_deg"] for i, s in zip(dataset.trajectory_ids, dataset.scenarios)}

@@ -30,6 +30,7 @@ from symbench.core.plugin.registry import evaluator
 
 if TYPE_CHECKING:  # the data layer's types, for annotations only
     from symbench.core.data.dataset import Dataset
+    from symbench.core.data.symmetry.overlap import SplitOverlap
     from symbench.core.robot.specs import RobotSpec
 
 Predict = Callable[[dict[str, np.ndarray]], np.ndarray]
@@ -133,6 +134,13 @@ class EvaluationContext:
         if (dataset, split, variant) not in self._trained_on:
             self._trained_on[dataset, split, variant] = self.retrain_on(dataset, split, variant)
         return self._trained_on[dataset, split, variant]
+
+    def image_overlap(self) -> SplitOverlap:
+        """The image overlap of the run's split and seed (`symbench.split_overlap`): not a
+        property of the model, so the runs of one output folder measure it once."""
+        from symbench.core.runs.overlap_cache import cached_split_overlap
+
+        return cached_split_overlap(self.dataset, self.split, self.seed, self.output_dir)
 
     def test_raw(self) -> tuple[dict[str, np.ndarray], np.ndarray]:
         """Raw columns of the test trajectories (whole trajectories, up to the preset's

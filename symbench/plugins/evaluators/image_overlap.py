@@ -1,7 +1,8 @@
 """How much of the run's test (and validation) side the model has seen in a symmetric form:
 the share of those climbs that are images of a training climb, per symmetry class of model.
 
-Not a property of the model: the same for every model on a dataset, split and seed. It is in
+Not a property of the model: the same for every model on a dataset, split and seed, so the
+context measures it once per output folder (`EvaluationContext.image_overlap`). It is in
 every record so that a reader can tell, from the record alone, whether the model's test error
 measures generalization or recall: on dataset v6's grids nearly every `iid` test climb was a
 rotated image of a training climb for an equivariant model; on v7 none should be
@@ -12,7 +13,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from symbench import EvaluationContext, split_overlap
+from symbench import EvaluationContext
 
 NAME = "image-overlap"
 DESCRIPTION = (
@@ -22,7 +23,7 @@ DESCRIPTION = (
 
 
 def evaluate(context: EvaluationContext) -> dict[str, Any]:
-    overlap = split_overlap(context.dataset, context.split, context.seed).to_dict()
+    overlap = context.image_overlap().to_dict()
     out: dict[str, Any] = {
         "exact_tolerance": overlap["exact_tolerance"],
         "near_tolerance": overlap["near_tolerance"],

@@ -23,10 +23,19 @@ from symbench.core.symmetry import legs as leg_symmetry
 from symbench.core.symmetry.groups import GroupElement
 from symbench.core.symmetry.legs import MIRROR_Y
 
+_BASE_MAPS: dict[tuple[bytes, bytes, GroupElement, float], np.ndarray] = {}
+
 
 def base_map(frames: LegFrames, g: GroupElement, tol: float = 1e-9) -> np.ndarray:
-    """What g does to the base; refused when the robot's legs lack that symmetry."""
-    return leg_symmetry.base_map(frames.rotations, frames.origins, g, tol)
+    """What g does to the base; refused when the robot's legs lack that symmetry. Kept per
+    (frames, element) once checked, read-only: the image overlap acts with each element
+    tens of thousands of times, and checking the frames cost a sixth of its time."""
+    key = (frames.rotations.tobytes(), frames.origins.tobytes(), g, tol)
+    if key not in _BASE_MAPS:
+        gb = leg_symmetry.base_map(frames.rotations, frames.origins, g, tol)
+        gb.setflags(write=False)
+        _BASE_MAPS[key] = gb
+    return _BASE_MAPS[key]
 
 
 def act_on_raw(
@@ -34,10 +43,10 @@ def act_on_raw(
 ) -> dict[str, np.ndarray]:
     """g . raw for raw columns shaped (T, ...) (see symbench.core.sim.raw), float64."""
     gb = base_map(frames, g)
-    joint_signs = np.asarray(FeatureType.JOINT.reflection_signs) if g.reflect else np.ones(3)
-    out = relabel_legs(raw, g.source_legs(), joint_signs)
-    if not g.reflect:
-        return turn_base(out, -rotation_angle(frames, g))
+    out = _with_base_copied(raw, act_on_legs(g, raw, frames))
+    if not g.reflect:  # `out` is a fresh copy: its base turned in place of copying it again
+        out["base_quat"] = _turned(out["base_quat"], -rotation_angle(frames, g))
+        return out
     quat = np.asarray(raw["base_quat"], np.float64)
     angle = np.arctan2(*(gb @ MIRROR_Y)[[1, 0], 0])
     turned = quat_multiply(quat, yaw_quat(angle))
@@ -80,23 +89,47 @@ def rotation_angle(frames: LegFrames, g: GroupElement) -> float:
     return float(np.arctan2(gb[1, 0], gb[0, 0]))
 
 
+def act_on_legs(
+    g: GroupElement, raw: Mapping[str, np.ndarray], frames: LegFrames
+) -> dict[str, np.ndarray]:
+    """The per-leg columns of `act_on_raw(g, raw, frames)` (joints and flags) alone, without
+    turning the base: what comparing joint states needs (`compare`'s early stop)."""
+    base_map(frames, g)  # refused when the robot's legs lack the symmetry
+    joint_signs = np.asarray(FeatureType.JOINT.reflection_signs) if g.reflect else np.ones(3)
+    return _relabelled(raw, g.source_legs(), joint_signs)
+
+
 def relabel_legs(
     raw: Mapping[str, np.ndarray], source_legs: Any, joint_signs: Any = 1.0
 ) -> dict[str, np.ndarray]:
     """Per-leg columns relabelled, new leg j = old leg source_legs[j] (joint columns times
     `joint_signs`); the base is left as it is."""
+    return _with_base_copied(raw, _relabelled(raw, source_legs, joint_signs))
+
+
+def _relabelled(
+    raw: Mapping[str, np.ndarray], source_legs: Any, joint_signs: Any
+) -> dict[str, np.ndarray]:
     src = np.asarray(source_legs, dtype=np.int64)
-    out = {k: np.array(v, copy=True) for k, v in raw.items()}
-    for name in JOINT_COLUMNS:
-        out[name] = np.asarray(raw[name], np.float64)[:, src, :] * joint_signs
-    for name in FLAG_COLUMNS:
-        out[name] = np.asarray(raw[name])[:, src]
-    return out
+    joints = {name: np.asarray(raw[name], np.float64)[:, src, :] for name in JOINT_COLUMNS}
+    out = {name: column * joint_signs for name, column in joints.items()}
+    return out | {name: np.asarray(raw[name])[:, src] for name in FLAG_COLUMNS}
+
+
+def _with_base_copied(
+    raw: Mapping[str, np.ndarray], legs: Mapping[str, np.ndarray]
+) -> dict[str, np.ndarray]:
+    """`raw`'s columns in its order, the per-leg ones from `legs`, the others copies."""
+    return {k: legs[k] if k in legs else np.array(v, copy=True) for k, v in raw.items()}
 
 
 def turn_base(raw: Mapping[str, np.ndarray], angle: float) -> dict[str, np.ndarray]:
     """The base turned by `angle` (rad) about its own z (the surface normal when it stands
     on the surface); nothing else changes."""
     out = {k: np.array(v, copy=True) for k, v in raw.items()}
-    out["base_quat"] = quat_multiply(np.asarray(raw["base_quat"], np.float64), yaw_quat(angle))
+    out["base_quat"] = _turned(raw["base_quat"], angle)
     return out
+
+
+def _turned(base_quat: np.ndarray, angle: float) -> np.ndarray:
+    return quat_multiply(np.asarray(base_quat, np.float64), yaw_quat(angle))
