@@ -61,6 +61,9 @@ def _images(robot: str) -> tuple[Climbs, dict[str, int]]:
         "near twin": _perturbed(twin, 0.01),  # far above the exact tolerance, within near
         "far twin": _perturbed(twin, 0.3),  # beyond near
         "other": synthetic_raw(spec.n_legs, 150, seed=3),
+        # the joints' states as the base climb's, the base elsewhere: only the base group
+        # tells them apart, so no early stop may skip it
+        "base moved": {**base, "base_pos": np.asarray(base["base_pos"]) + 0.5},
     }
     raw = {0: base, 1: synthetic_raw(spec.n_legs, 150, seed=2)}
     ids = {}
@@ -80,6 +83,7 @@ EXPECTED = {
     "near twin": (set(), {"group", "mirror"}),
     "far twin": (set(), set()),
     "other": (set(), set()),
+    "base moved": (set(), set()),
 }
 
 
@@ -100,6 +104,25 @@ def test_errors_bracket_the_tolerances():
     near = climbs.class_error(0, ids["near twin"], group)
     assert 100 * EXACT_TOLERANCE < near < NEAR_TOLERANCE
     assert climbs.class_error(0, ids["other"], CLASSES.index("mirror")) > NEAR_TOLERANCE
+
+
+@pytest.mark.parametrize("robot", ROBOTS)
+def test_an_early_stop_changes_no_error_at_or_below_where_it_stops(robot):
+    """Stopped above a threshold, an element's error is a lower bound above it; at or
+    below it, the whole error, bit for bit: so no count at either tolerance can change."""
+    climbs, ids = _images(robot)
+    stops = 0
+    for k in ids.values():
+        for tier in climbs.tiers:
+            for g, heading in tier:
+                whole = climbs.element_error(0, k, g, heading)
+                stopped = climbs.element_error(0, k, g, heading, NEAR_TOLERANCE)
+                if whole <= NEAR_TOLERANCE:
+                    assert stopped == whole
+                else:
+                    assert NEAR_TOLERANCE < stopped <= whole
+                    stops += stopped < whole
+    assert stops > 0  # some comparison did stop before its last group
 
 
 def test_distinct_motions_gather_images_per_class():
