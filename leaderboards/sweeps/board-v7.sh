@@ -10,7 +10,10 @@
 set -uo pipefail
 
 REPO=$(cd "$(dirname "$0")/../.." && pwd)
-COMMIT=7a8d9fb
+# 2dd8a0d from hexa fraction-0.25 gnn on (2026-11-29): the runs' figures as at 7a8d9fb (the
+# code between changes no torch training or evaluation figure), the image overlap measured
+# once per split and seed; records made before name 7a8d9fb
+COMMIT=2dd8a0d
 WT=${1:-$(dirname "$REPO")/wt-board7m}
 PY=${PYTHON:-$REPO/.venv/bin/python}
 MODELS=sdnn,sdgnn,ffnn,ffnn-leg,gnn
