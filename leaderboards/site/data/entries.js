@@ -1009,6 +1009,511 @@ window.SYMBENCH_ENTRIES = {
   "split": "control-rotation",
   "title": "sdnn (acc, torch)"
  },
+ "hexa-climb-small-v7__converge__fraction-0.1__ffnn-leg__acc__torch": {
+  "board": "boards/hexa__hexa-climb-small-v7.html#converge--fraction-0-1",
+  "dataset": "hexa-climb-small-v7",
+  "entry": "entries/hexa-climb-small-v7__converge__fraction-0.1__ffnn-leg__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "3",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.376 [0.355, 0.410]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.480 [0.452, 0.522]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.01 [0.94, 1.08]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "172 306",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "4 600 [4 000, 5 100]",
+    ""
+   ],
+   [
+    "epochs",
+    "80.0 [69.6, 88.8]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "patience 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "hexa",
+  "split": "fraction-0.1",
+  "title": "ffnn-leg (acc, torch)"
+ },
+ "hexa-climb-small-v7__converge__fraction-0.1__ffnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-small-v7.html#converge--fraction-0-1",
+  "dataset": "hexa-climb-small-v7",
+  "entry": "entries/hexa-climb-small-v7__converge__fraction-0.1__ffnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "4-5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.674 [0.642, 0.706]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.860 [0.817, 0.904]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.48 [1.44, 1.50]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.30 [1.22, 1.39]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "157 970",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.027",
+    ""
+   ],
+   [
+    "steps",
+    "6 600 [4 200, 9 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "115 [73, 157]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 2, patience 3",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "hexa",
+  "split": "fraction-0.1",
+  "title": "ffnn (acc, torch)"
+ },
+ "hexa-climb-small-v7__converge__fraction-0.1__gnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-small-v7.html#converge--fraction-0-1",
+  "dataset": "hexa-climb-small-v7",
+  "entry": "entries/hexa-climb-small-v7__converge__fraction-0.1__gnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "4-5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.678 [0.642, 0.713]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.865 [0.821, 0.911]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.32 [1.04, 1.50]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.46 [1.35, 1.56]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.009",
+    ""
+   ],
+   [
+    "steps",
+    "6 200 [3 600, 8 800]",
+    ""
+   ],
+   [
+    "epochs",
+    "108 [63, 154]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 2, patience 3",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "hexa",
+  "split": "fraction-0.1",
+  "title": "gnn (acc, torch)"
+ },
+ "hexa-climb-small-v7__converge__fraction-0.1__sdgnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-small-v7.html#converge--fraction-0-1",
+  "dataset": "hexa-climb-small-v7",
+  "entry": "entries/hexa-climb-small-v7__converge__fraction-0.1__sdgnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.153 [0.137, 0.165]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.196 [0.175, 0.209]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "3.70 × 10⁻⁷ [3.43 × 10⁻⁷, 3.96 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "9 500 [8 500, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "166 [149, 175]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3, patience 2",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "hexa",
+  "split": "fraction-0.1",
+  "title": "sdgnn (acc, torch)"
+ },
+ "hexa-climb-small-v7__converge__fraction-0.1__sdnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-small-v7.html#converge--fraction-0-1",
+  "dataset": "hexa-climb-small-v7",
+  "entry": "entries/hexa-climb-small-v7__converge__fraction-0.1__sdnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "1",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.139 [0.127, 0.150]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.177 [0.163, 0.191]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "3.20 × 10⁻⁷ [2.87 × 10⁻⁷, 3.61 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0135",
+    ""
+   ],
+   [
+    "steps",
+    "8 100 [6 600, 9 600]",
+    ""
+   ],
+   [
+    "epochs",
+    "142 [116, 168]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 2, patience 3",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "hexa",
+  "split": "fraction-0.1",
+  "title": "sdnn (acc, torch)"
+ },
  "hexa-climb-small-v7__converge__iid__ffnn-leg__acc__torch": {
   "board": "boards/hexa__hexa-climb-small-v7.html#converge--iid",
   "dataset": "hexa-climb-small-v7",
