@@ -49,7 +49,7 @@ import numpy as np
 
 from symbench.core.common.errors import SymbenchError
 from symbench.core.data.symmetry.alignment import align_pair, aligned_rows, difference
-from symbench.core.data.symmetry.raw_action import act_on_legs, act_on_raw
+from symbench.core.data.symmetry.raw_action import act_on_base, act_on_legs
 from symbench.core.data.symmetry.report import GROUPS
 from symbench.core.data.views.frames import LegFrames, quat_multiply, quat_to_matrix, yaw_quat
 from symbench.core.symmetry.groups import GroupElement, LegGroup
@@ -179,15 +179,15 @@ class Climbs:
         """The error of climb a, acted on by g (heading free or not), as climb b. Once a
         group's error exceeds `decided_above` the rest is not computed and that group's error,
         a lower bound of the whole, is returned (see the module's Early stop)."""
-        identity = g == self.group.identity
+        identity, climb = g == self.group.identity, self.raw[a]
         # the legs' columns first (the alignment reads their flags); the base when reached
-        moved = self.raw[a] if identity else act_on_legs(g, self.raw[a], self.frames)
+        moved = climb if identity else {**climb, **act_on_legs(g, climb, self.frames)}
         shift = align_pair(moved, self.raw[b], self.unknown).shift
         worst = 0.0
         for name, cols in GROUPS.items():
             if name == "base":
                 if not identity:
-                    moved = act_on_raw(g, self.raw[a], self.frames)
+                    moved = {**moved, **act_on_base(g, climb, self.frames)}
                 if heading:  # only the base's columns turn with the heading
                     axes = self.base_axes(b)
                     angle = _heading_angle(moved, self.raw[b], axes, shift, self.scales)

@@ -42,15 +42,20 @@ def act_on_raw(
     g: GroupElement, raw: Mapping[str, np.ndarray], frames: LegFrames
 ) -> dict[str, np.ndarray]:
     """g . raw for raw columns shaped (T, ...) (see symbench.core.sim.raw), float64."""
+    return _in_raw_order(raw, act_on_legs(g, raw, frames) | act_on_base(g, raw, frames))
+
+
+def act_on_base(
+    g: GroupElement, raw: Mapping[str, np.ndarray], frames: LegFrames
+) -> dict[str, np.ndarray]:
+    """The base's columns of `act_on_raw(g, raw, frames)` that g changes (a rotation turns
+    the base about its own z; a reflection also mirrors the scene); the others are raw's."""
+    if not g.reflect:
+        return {"base_quat": _turned(raw["base_quat"], -rotation_angle(frames, g))}
     gb = base_map(frames, g)
-    out = _with_base_copied(raw, act_on_legs(g, raw, frames))
-    if not g.reflect:  # `out` is a fresh copy: its base turned in place of copying it again
-        out["base_quat"] = _turned(out["base_quat"], -rotation_angle(frames, g))
-        return out
-    quat = np.asarray(raw["base_quat"], np.float64)
     angle = np.arctan2(*(gb @ MIRROR_Y)[[1, 0], 0])
-    turned = quat_multiply(quat, yaw_quat(angle))
-    out["base_quat"] = turned * np.array([1.0, -1.0, 1.0, -1.0])  # conjugated by the mirror
+    turned = _turned(raw["base_quat"], angle)
+    out = {"base_quat": turned * np.array([1.0, -1.0, 1.0, -1.0])}  # conjugated by the mirror
     for name in WORLD_VECTORS:
         out[name] = np.asarray(raw[name], np.float64) @ MIRROR_Y
     out["base_angvel"] = np.asarray(raw["base_angvel"], np.float64) @ -MIRROR_Y
@@ -92,8 +97,8 @@ def rotation_angle(frames: LegFrames, g: GroupElement) -> float:
 def act_on_legs(
     g: GroupElement, raw: Mapping[str, np.ndarray], frames: LegFrames
 ) -> dict[str, np.ndarray]:
-    """The per-leg columns of `act_on_raw(g, raw, frames)` (joints and flags) alone, without
-    turning the base: what comparing joint states needs (`compare`'s early stop)."""
+    """The per-leg columns of `act_on_raw(g, raw, frames)` (joints and flags) alone: what
+    comparing joint states needs before the base (`compare`'s early stop)."""
     base_map(frames, g)  # refused when the robot's legs lack the symmetry
     joint_signs = np.asarray(FeatureType.JOINT.reflection_signs) if g.reflect else np.ones(3)
     return _relabelled(raw, g.source_legs(), joint_signs)
@@ -104,7 +109,7 @@ def relabel_legs(
 ) -> dict[str, np.ndarray]:
     """Per-leg columns relabelled, new leg j = old leg source_legs[j] (joint columns times
     `joint_signs`); the base is left as it is."""
-    return _with_base_copied(raw, _relabelled(raw, source_legs, joint_signs))
+    return _in_raw_order(raw, _relabelled(raw, source_legs, joint_signs))
 
 
 def _relabelled(
@@ -116,11 +121,11 @@ def _relabelled(
     return out | {name: np.asarray(raw[name])[:, src] for name in FLAG_COLUMNS}
 
 
-def _with_base_copied(
-    raw: Mapping[str, np.ndarray], legs: Mapping[str, np.ndarray]
+def _in_raw_order(
+    raw: Mapping[str, np.ndarray], changed: Mapping[str, np.ndarray]
 ) -> dict[str, np.ndarray]:
-    """`raw`'s columns in its order, the per-leg ones from `legs`, the others copies."""
-    return {k: legs[k] if k in legs else np.array(v, copy=True) for k, v in raw.items()}
+    """`raw`'s columns in its order, those in `changed` replaced, the others copied."""
+    return {k: changed[k] if k in changed else np.array(v, copy=True) for k, v in raw.items()}
 
 
 def turn_base(raw: Mapping[str, np.ndarray], angle: float) -> dict[str, np.ndarray]:
