@@ -32,7 +32,7 @@ def test_torch_flops_of_an_mlp_are_its_matmuls_forward_and_backward():
     assert step_flops_per_sample(entry, dims, BATCH) == expected
 
 
-@pytest.mark.parametrize("name", ["ffnn", "sdnn"])
+@pytest.mark.parametrize("name", ["sdnn", pytest.param("ffnn", marks=pytest.mark.slow)])
 def test_both_backends_count_nearly_the_same_flops(name):
     """XLA also counts elementwise operations; the matmuls dominate, so within 10%."""
     torch_entry, jax_entry = registry.model(name, "torch"), registry.model(name, "jax")

@@ -143,6 +143,7 @@ def test_recorded_contact_and_magnet_flags_match_the_physics(robot, inclination)
     assert raw["contact"].max() == 1 and raw["magnet"].max() == 1
 
 
+@pytest.mark.slow  # two generations (each robot's hash: test_same_data_on_every_cpu)
 def test_generating_the_smoke_preset_twice_gives_the_same_hash(tmp_path, monkeypatch):
     """`symbench data generate --robot hexa --preset smoke`, twice, with 1 and 2 workers."""
     from symbench.core.data.generation.generate import generate

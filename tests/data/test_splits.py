@@ -77,16 +77,27 @@ def preset_context(robot: str, key: str) -> SplitContext:
     )
 
 
+@pytest.fixture(scope="module")
+def grids_home(tmp_path_factory):
+    """A private home holding the two short grids, made once: the tests only read them."""
+    home = tmp_path_factory.mktemp("grids") / "home"
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setenv("SYMBENCH_HOME", str(home))
+        for grid, did in (("small@v6", "hexa-short-v6"), ("transfer@v6", "hexa-transfer-short-v6")):
+            generate(
+                "hexa",
+                grid,
+                simulator=fake_simulate,
+                show_progress=False,
+                scenarios=short_grid("hexa", grid),
+                id_override=did,
+            )
+    return home
+
+
 @pytest.fixture
-def hexa_small(home):
-    generate(
-        "hexa",
-        "small@v6",
-        simulator=fake_simulate,
-        show_progress=False,
-        scenarios=short_grid("hexa"),
-        id_override="hexa-short-v6",
-    )
+def hexa_small(grids_home, monkeypatch):
+    monkeypatch.setenv("SYMBENCH_HOME", str(grids_home))
     return load_dataset("hexa-short-v6")
 
 
@@ -100,15 +111,8 @@ def test_the_standard_splits_are_registered():
 
 
 @pytest.fixture
-def hexa_transfer(home):
-    generate(
-        "hexa",
-        "transfer@v6",
-        simulator=fake_simulate,
-        show_progress=False,
-        scenarios=short_grid("hexa", "transfer@v6"),
-        id_override="hexa-transfer-short-v6",
-    )
+def hexa_transfer(grids_home, monkeypatch):
+    monkeypatch.setenv("SYMBENCH_HOME", str(grids_home))
     return load_dataset("hexa-transfer-short-v6")
 
 

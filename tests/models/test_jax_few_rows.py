@@ -15,11 +15,16 @@ from symbench.core.training.normalization import Normalizer
 from symbench.testing.synthetic import synthetic_views
 
 TOLERANCE = {np.float64: 1e-12, np.float32: 1e-5}
+SLOW = pytest.mark.slow
 
 
 @pytest.mark.parametrize("dtype", [np.float64, np.float32])
-@pytest.mark.parametrize("robot", ["magneto", "hexa", "nona"])
-@pytest.mark.parametrize("model", ["gnn", "sdgnn", "sdnn"])  # Dense and the graph network
+# hexa by default; XLA compiles each robot's graph networks for a minute on 2 cores (-m slow)
+@pytest.mark.parametrize(
+    "robot", ["hexa", *(pytest.param(r, marks=SLOW) for r in ("magneto", "nona"))]
+)
+# Dense and the graph network (sdgnn's; gnn's, which XLA compiles for a minute, -m slow)
+@pytest.mark.parametrize("model", ["sdnn", "sdgnn", pytest.param("gnn", marks=SLOW)])
 def test_one_row_at_a_time_predicts_what_the_batch_predicts(model, robot, dtype):
     entry = registry.model(model, "jax")
     data = synthetic_views(load_robot(robot).n_legs, 64, seed=1)[entry.view]

@@ -23,8 +23,17 @@ def converge(
     return TrainConfig(schedule=schedule, **{"progress": False, **kwargs})
 
 
-@pytest.mark.parametrize("backend", BACKENDS)
-@pytest.mark.parametrize("name", MODELS)
+# JAX's graph networks compile for half a minute on 2 cores: -m slow
+LEARNING = [
+    pytest.param(n, b, marks=pytest.mark.slow)
+    if (b, n) in {("jax", "gnn"), ("jax", "sdgnn")}
+    else (n, b)
+    for n in MODELS
+    for b in BACKENDS
+]
+
+
+@pytest.mark.parametrize(("name", "backend"), LEARNING)
 def test_validation_loss_falls(name, backend, smoke):
     entry = registry.model(name, backend)
     tr, va = smoke
@@ -54,8 +63,14 @@ def _interrupted_after(monkeypatch, steps: int) -> None:
     monkeypatch.setattr(loop, "rate_scale", scale)
 
 
-@pytest.mark.parametrize("backend", BACKENDS)
-@pytest.mark.parametrize("protocol", ["converge", "cosine", "paper"])
+# every protocol in torch by default; in JAX (a minute each on 2 cores) under -m slow
+@pytest.mark.parametrize(
+    ("protocol", "backend"),
+    [
+        *((p, "torch") for p in ("converge", "cosine", "paper")),
+        *(pytest.param(p, "jax", marks=pytest.mark.slow) for p in ("converge", "cosine", "paper")),
+    ],
+)
 def test_interrupted_training_resumes_exactly(backend, protocol, smoke, tmp_path, monkeypatch):
     """Under converge and cosine the checks fall every 3 steps of 4-batch epochs: a check,
     and so a resume, in the middle of an epoch continues its batch order (and, under cosine,

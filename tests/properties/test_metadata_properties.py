@@ -10,7 +10,7 @@ import shutil
 
 import pytest
 from cli_invoke import error_line, invoke
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 from sandbox import fresh_home
 from strategies import FILE_BYTES, edited
@@ -146,6 +146,7 @@ def test_any_metadata_file_gives_an_error_naming_the_dataset(template, data):
 
 
 @pytest.mark.parametrize("rehash", [True, False], ids=["re-hashed", "as edited"])
+@settings(max_examples=settings.default.max_examples // 5)  # each reads every split: seconds
 @given(data=st.data())
 def test_edited_metadata_gives_an_error_or_counts_that_agree_with_the_files(template, rehash, data):
     meta = data.draw(edited(template[1]))

@@ -103,6 +103,7 @@ def test_sweep_workers_exit_when_the_sweep_is_killed(smoke_hexa, home, tmp_path)
         assert [p for p in alive if p.status() != psutil.STATUS_ZOMBIE] == []
 
 
+@pytest.mark.slow  # a sweep of real runs
 def test_ctrl_c_summary_counts_every_finished_run(smoke_hexa, home, tmp_path):
     """Twelve runs, so that on a loaded machine the sweep is still busy when both workers
     are up and Ctrl-C arrives (with four, a slow second worker let them all finish first)."""
@@ -120,6 +121,7 @@ def test_ctrl_c_summary_counts_every_finished_run(smoke_hexa, home, tmp_path):
     assert int(found.group(1)) == len(records) < 12
 
 
+@pytest.mark.slow  # a sweep of real runs
 def test_a_sweep_goes_on_when_a_worker_is_killed_and_reruns_its_runs(smoke_hexa, home, tmp_path):
     """The out-of-memory killer's SIGKILL of one worker costs a rerun, not the sweep."""
     with running(sweep_command(tmp_path / "results"), home) as proc:

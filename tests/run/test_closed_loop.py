@@ -201,6 +201,7 @@ def test_closed_loop_evaluator_in_a_run(smoke_home, tmp_path):
     assert judged["open_loop_torque_rmse"] > 0.0
 
 
+@pytest.mark.slow  # two or three runs with a closed loop each
 def test_the_calibration_is_measured_once_per_output_folder(smoke_home, tmp_path):
     """Oracle, floor and the expert's references do not depend on the model: a second run
     in the same folder reads them back (cache keyed by dataset content, references and
@@ -232,6 +233,7 @@ def test_the_calibration_is_measured_once_per_output_folder(smoke_home, tmp_path
         assert other[key] == first[key]
 
 
+@pytest.mark.slow  # a closed loop each (iid's, by default: test_closed_loop_evaluator_in_a_run)
 @pytest.mark.parametrize("split", ("unseen-heading", "unseen-rotation"))
 def test_closed_loop_on_the_held_out_splits(smoke_home, tmp_path, split):
     """Every split whose test climbs are held out gets its closed loop (iid: above)."""
@@ -285,6 +287,7 @@ def test_references_are_the_test_trajectories_by_id():
     ]
 
 
+@pytest.mark.slow  # two or three runs with a closed loop each
 def test_trainings_ahead_in_parallel_give_the_same_record(smoke_home, tmp_path):
     """With two workers the trainings the evaluators declare (generalization's splits, the
     closed loop's model on the noisy data) run beside the run's own, in other processes;

@@ -133,6 +133,7 @@ def test_a_run_may_choose_the_next_variant(smoke_home, tmp_path):
         run(RunSpec(model="sdnn", robot="hexa", variant="nxt", output=tmp_path))
 
 
+@pytest.mark.slow  # the generalization evaluator trains three more models
 def test_timings_count_each_second_once(smoke_home, tmp_path):
     record = run(
         RunSpec(

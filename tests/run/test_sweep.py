@@ -131,6 +131,7 @@ def test_a_sweep_makes_the_data_its_evaluators_train_on_before_any_run(
     assert seen == [True, True]
 
 
+@pytest.mark.slow  # a sweep of real runs
 def test_a_sweeps_step_budget_reaches_every_run(smoke_home, tmp_path):
     """`--max-steps` of a sweep is every run's budget, recorded; a sweep without it uses the
     preset's."""

@@ -79,7 +79,7 @@ def test_float32_errors_are_measured_separately():
 
 
 def test_report_serializes():
-    report = check_model(registry.model("gnn", "jax"), robot_group("nona"))
+    report = check_model(registry.model("gnn", "torch"), robot_group("nona"))
     d = report.to_dict()
     assert d["claims_equivariance"] is False and d["passed"] and d["max_error"]["float64"] > 0.01
     assert d["controls"] and all(c["failed_as_it_must"] for c in d["controls"])

@@ -16,8 +16,15 @@ from symbench.testing.model_group import measure_symmetry_group
 ROTATIONS = {"magneto": "C2", "hexa": "C6", "nona": "C9"}
 
 
-@pytest.mark.parametrize("backend", ["torch", "jax"])
-@pytest.mark.parametrize("robot", ROTATIONS)
+# every robot in torch; JAX on hexa by default (its compiles: seconds each), all under -m slow
+@pytest.mark.parametrize(
+    ("robot", "backend"),
+    [
+        *((r, "torch") for r in ROTATIONS),
+        ("hexa", "jax"),
+        *(pytest.param(r, "jax", marks=pytest.mark.slow) for r in ("magneto", "nona")),
+    ],
+)
 def test_the_ring_model_is_equivariant_to_the_robots_rotations(robot, backend):
     spec = load_robot(robot)
     report = check_model(
