@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 from cli_invoke import invoke, refusal
-from hypothesis import event, given
+from hypothesis import event, given, settings
 from hypothesis import strategies as st
 from sandbox import fresh_home
 from strategies import edited
@@ -27,6 +27,7 @@ def logs(tmp_path_factory) -> Path:
     return shutil.copytree(LOGS, tmp_path_factory.mktemp("logs") / "magneto-gaits")
 
 
+@settings(max_examples=settings.default.max_examples // 2)  # each imports and measures
 @given(data=st.data())
 def test_edited_scenarios_are_refused_on_import_or_reported_on(logs, data):
     manifest = json.loads((LOGS / "import.json").read_text())

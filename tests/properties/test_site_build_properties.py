@@ -65,7 +65,7 @@ def test_a_board_with_one_odd_file_builds_or_is_refused_in_one_line(tmp_path, ge
     assert "odd.json" in refusal(result)
 
 
-@SHARED_FIXTURES
+@settings(SHARED_FIXTURES, max_examples=settings.default.max_examples // 5)  # builds a site each
 @given(data=st.data())
 def test_an_included_board_with_one_odd_file_builds_or_is_refused_in_one_line(
     tmp_path, genuine, data

@@ -17,7 +17,7 @@ from unittest import mock
 
 import pytest
 from cli_invoke import invoke, refusal
-from hypothesis import event, given
+from hypothesis import event, given, settings
 from hypothesis import strategies as st
 from sandbox import fresh_home
 from synthetic_raw import fake_simulate
@@ -59,6 +59,7 @@ def train(entry, train_set, val_set, config, checkpoint_dir=None):
     return SimpleNamespace(n_params=1, history={"val_loss": [loss]}, steps=1, stopped_by="x")
 
 
+@settings(max_examples=settings.default.max_examples // 2)  # a valid grid runs a tuning
 @given(
     model=st.sampled_from(["sdnn", "gnn"]),
     rates=values(RATES, ODD_RATES),

@@ -86,6 +86,7 @@ def test_an_imported_dataset_with_complete_scenarios_can_be_replayed():
     assert unmet_need("simulator", _dataset(leg_order=None)) is None  # default leg order
 
 
+@pytest.mark.slow  # the generalization evaluator trains on two more splits
 def test_a_run_on_logs_without_yaws_skips_what_it_cannot_do(smoke_hexa, home, tmp_path):
     """closed-loop is skipped (no yaw to replay), generalization trains on the splits the
     logs allow and names the one they do not; the run succeeds and the record keeps both."""
