@@ -8,15 +8,18 @@ under `-m slow`, which selects the same properties again.
 
 from __future__ import annotations
 
+import os
+import shutil
 from pathlib import Path
 
 import pytest
+from filelock import FileLock
 from hypothesis import HealthCheck, settings
 from synthetic_raw import fake_simulate
 
 from symbench.core.config.presets import dataset_id
 from symbench.core.config.provenance import hardware, library_versions
-from symbench.core.data.generation.generate import generate
+from symbench.core.data.generation.generate import ensure_dataset, generate
 from symbench.core.sim.scene.scenario import Scenario
 
 HASH = "ab" * 32
@@ -136,22 +139,48 @@ def smoke_hexa(home):
     return generate("hexa", "smoke", simulator=fake_simulate, show_progress=False)
 
 
-@pytest.fixture(scope="session")
-def simulated_smoke_hexa(tmp_path_factory):
-    """hexa's smoke dataset, simulated for real (about ten seconds), in a private home: its
-    rotated and heading-turned climbs are exact images, which the stand-in's are not."""
-    import os
+SMOKE_ROBOTS = ("magneto", "hexa", "nona")
 
+
+@pytest.fixture(scope="session")
+def real_smoke_home(tmp_path_factory) -> Path:
+    """A home holding every built-in robot's smoke dataset simulated for real (about 30 s),
+    made once per test run: under xdist the first worker to ask makes it, under a lock in the
+    run's folder, and the others wait for it. Read only: a test gets a copy (`real_smoke_copy`)."""
+    root = tmp_path_factory.getbasetemp()
+    if os.environ.get("PYTEST_XDIST_WORKER"):
+        root = root.parent  # this run's folder, which its workers share
+    home = root / "real-smoke-home"
+    with FileLock(f"{home}.lock"):
+        if not (root / "real-smoke-home.complete").exists():
+            with pytest.MonkeyPatch.context() as patch:
+                patch.setenv("SYMBENCH_HOME", str(home))
+                for robot in SMOKE_ROBOTS:
+                    ensure_dataset(robot, "smoke", workers=1, show_progress=False)
+            (root / "real-smoke-home.complete").touch()
+    return home
+
+
+@pytest.fixture(scope="session")
+def real_smoke_copy(real_smoke_home, tmp_path_factory):
+    """`real_smoke_copy(name)`: a private copy of `real_smoke_home`, for tests that may write
+    into their home."""
+
+    def copy(name: str) -> Path:
+        return Path(shutil.copytree(real_smoke_home, tmp_path_factory.mktemp(name) / "home"))
+
+    return copy
+
+
+@pytest.fixture(scope="session")
+def simulated_smoke_hexa(real_smoke_copy):
+    """hexa's smoke dataset, simulated for real, in a private home: its rotated and
+    heading-turned climbs are exact images, which the stand-in's are not."""
     from symbench.core.data.dataset import load_dataset
 
-    before = os.environ.get("SYMBENCH_HOME")
-    os.environ["SYMBENCH_HOME"] = str(tmp_path_factory.mktemp("simulated") / "home")
-    report = generate("hexa", "smoke", show_progress=False)
-    yield load_dataset(report.dataset_id)
-    if before is None:
-        del os.environ["SYMBENCH_HOME"]
-    else:
-        os.environ["SYMBENCH_HOME"] = before
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setenv("SYMBENCH_HOME", str(real_smoke_copy("simulated")))
+        yield load_dataset(dataset_id("hexa", "smoke"))
 
 
 # hexa climbs drawn as v7 draws them (yaw, heading, slope and direction continuous, each

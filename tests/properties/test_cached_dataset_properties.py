@@ -11,7 +11,7 @@ import shutil
 
 import pytest
 from cli_invoke import invoke, refusal
-from hypothesis import event, given
+from hypothesis import event, given, settings
 from hypothesis import strategies as st
 from sandbox import fresh_home
 from strategies import FILE_BYTES, changed, defective
@@ -50,6 +50,7 @@ def defective_table(draw, path) -> bytes:
     return sink.getvalue().to_pybytes()
 
 
+@settings(max_examples=settings.default.max_examples // 2)  # a dataset read per example
 @given(data=st.data(), rehash=st.booleans())
 def test_a_damaged_trajectory_file_is_named_or_read_as_it_is(template, data, rehash):
     folder, meta = template

@@ -8,7 +8,7 @@ import shutil
 from unittest import mock
 
 import pytest
-from hypothesis import event, given
+from hypothesis import event, given, settings
 from hypothesis import strategies as st
 from sandbox import fresh_home
 from strategies import FILE_BYTES, edited
@@ -64,11 +64,13 @@ def resume(searched, content: bytes, tmp_path_factory) -> None:
     assert summary["complete"] and len(summary["trials"]) == 1
 
 
+@settings(max_examples=settings.default.max_examples // 2)  # a resumed search per example
 @given(content=FILE_BYTES)
 def test_a_journal_of_any_bytes_is_refused_naming_it_or_read(searched, tmp_path_factory, content):
     resume(searched, content, tmp_path_factory)
 
 
+@settings(max_examples=settings.default.max_examples // 2)  # a resumed search per example
 @given(data=st.data())
 def test_an_edited_journal_line_is_refused_naming_it_or_read(searched, tmp_path_factory, data):
     lines = [json.loads(line) for line in searched[2].read_text().splitlines()]

@@ -108,21 +108,12 @@ def test_no_image_pair_is_a_clear_error():
 
 
 @pytest.fixture(scope="module")
-def smoke_home(tmp_path_factory):
-    """The real smoke dataset of hexa (about 10 s to simulate) in a private home."""
-    import os
-
-    from symbench.core.data.generation.generate import ensure_dataset
-
-    home = tmp_path_factory.mktemp("symmetry-home")
-    before = os.environ.get("SYMBENCH_HOME")
-    os.environ["SYMBENCH_HOME"] = str(home)
-    ensure_dataset("hexa", "smoke", workers=1, show_progress=False)
-    yield home
-    if before is None:
-        del os.environ["SYMBENCH_HOME"]
-    else:
-        os.environ["SYMBENCH_HOME"] = before
+def smoke_home(real_smoke_copy):
+    """The real smoke datasets (hexa's is used) in a private home."""
+    with pytest.MonkeyPatch.context() as patch:
+        home = real_smoke_copy("symmetry-home")
+        patch.setenv("SYMBENCH_HOME", str(home))
+        yield home
 
 
 def test_cli_on_a_generated_dataset_and_on_a_heavier_leg(smoke_home, tmp_path):
