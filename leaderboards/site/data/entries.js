@@ -9594,6 +9594,511 @@ window.SYMBENCH_ENTRIES = {
   "split": "unseen-rotation",
   "title": "sdnn (acc, torch)"
  },
+ "nona-climb-small-v7__converge__control-heading__ffnn-leg__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--control-heading",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__control-heading__ffnn-leg__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "3",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0954 [0.0902, 0.0997]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.165 [0.156, 0.172]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.840 [0.725, 0.955]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "192 283",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
+    "steps",
+    "9 900 [9 700, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "25.8 [25.4, 26.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3, patience 2",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "control-heading",
+  "title": "ffnn-leg (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__control-heading__ffnn__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--control-heading",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__control-heading__ffnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.255 [0.238, 0.269]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.439 [0.413, 0.461]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.11 [1.01, 1.20]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.24 [1.10, 1.39]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "168 731",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.081",
+    ""
+   ],
+   [
+    "steps",
+    "9 400 [8 200, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "24.4 [21.2, 26.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 4, patience 1",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "control-heading",
+  "title": "ffnn (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__control-heading__gnn__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--control-heading",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__control-heading__gnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "4",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.181 [0.165, 0.198]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.312 [0.286, 0.339]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.650 [0.568, 0.742]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.43 [1.22, 1.66]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "9 600 [8 800, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "25.0 [23.0, 26.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3, patience 2",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "control-heading",
+  "title": "gnn (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__control-heading__sdgnn__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--control-heading",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__control-heading__sdgnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0317 [0.0305, 0.0328]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0546 [0.0529, 0.0564]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "3.34 × 10⁻⁷ [2.94 × 10⁻⁷, 3.79 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "26.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "control-heading",
+  "title": "sdgnn (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__control-heading__sdnn__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--control-heading",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__control-heading__sdnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "1",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0260 [0.0249, 0.0273]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0448 [0.0432, 0.0466]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "3.07 × 10⁻⁷ [2.81 × 10⁻⁷, 3.29 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
+    "steps",
+    "9 900 [9 700, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "25.8 [25.4, 26.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 4, patience 1",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "control-heading",
+  "title": "sdnn (acc, torch)"
+ },
  "nona-climb-small-v7__converge__control-rotation__ffnn-leg__acc__torch": {
   "board": "boards/nona__nona-climb-small-v7.html#converge--control-rotation",
   "dataset": "nona-climb-small-v7",
