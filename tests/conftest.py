@@ -8,6 +8,7 @@ under `-m slow`, which selects the same properties again.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import shutil
 from pathlib import Path
@@ -163,11 +164,15 @@ def real_smoke_home(tmp_path_factory) -> Path:
 
 @pytest.fixture(scope="session")
 def real_smoke_copy(real_smoke_home, tmp_path_factory):
-    """`real_smoke_copy(name)`: a private copy of `real_smoke_home`, for tests that may write
-    into their home."""
+    """`with real_smoke_copy(name) as home:` a private copy of `real_smoke_home` as
+    $SYMBENCH_HOME for the block, for tests that may write into their home."""
 
-    def copy(name: str) -> Path:
-        return Path(shutil.copytree(real_smoke_home, tmp_path_factory.mktemp(name) / "home"))
+    @contextlib.contextmanager
+    def copy(name: str):
+        home = Path(shutil.copytree(real_smoke_home, tmp_path_factory.mktemp(name) / "home"))
+        with pytest.MonkeyPatch.context() as patch:
+            patch.setenv("SYMBENCH_HOME", str(home))
+            yield home
 
     return copy
 
@@ -178,8 +183,7 @@ def simulated_smoke_hexa(real_smoke_copy):
     heading-turned climbs are exact images, which the stand-in's are not."""
     from symbench.core.data.dataset import load_dataset
 
-    with pytest.MonkeyPatch.context() as patch:
-        patch.setenv("SYMBENCH_HOME", str(real_smoke_copy("simulated")))
+    with real_smoke_copy("simulated"):
         yield load_dataset(dataset_id("hexa", "smoke"))
 
 

@@ -7,7 +7,5 @@ import pytest
 
 @pytest.fixture(scope="session")
 def smoke_home(real_smoke_copy):
-    with pytest.MonkeyPatch.context() as patch:
-        home = real_smoke_copy("symbench-home")
-        patch.setenv("SYMBENCH_HOME", str(home))
+    with real_smoke_copy("symbench-home") as home:
         yield home

@@ -110,9 +110,7 @@ def test_no_image_pair_is_a_clear_error():
 @pytest.fixture(scope="module")
 def smoke_home(real_smoke_copy):
     """The real smoke datasets (hexa's is used) in a private home."""
-    with pytest.MonkeyPatch.context() as patch:
-        home = real_smoke_copy("symmetry-home")
-        patch.setenv("SYMBENCH_HOME", str(home))
+    with real_smoke_copy("symmetry-home") as home:
         yield home
 
 
