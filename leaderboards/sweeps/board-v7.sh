@@ -3,8 +3,8 @@
 # commit the small board is made at. Every sweep skips the runs whose record exists, so the
 # same command resumes after an interruption; the published records and those kept in
 # ../pending/ (committed between working sessions, before their group is complete) are
-# copied into the worktree first. A sweep whose
-# worker died (out of memory) is run again with one worker before the next phase starts.
+# copied into the worktree first. A sweep that
+# failed (a worker out of memory) is run once more.
 #
 #   leaderboards/sweeps/board-v7.sh [WORKTREE]        (default: ../wt-board7m beside the repo)
 set -uo pipefail
@@ -33,12 +33,12 @@ for kept in "$REPO"/leaderboards/pending/*/; do
     cp -n "$kept"*.json "$WT/$(basename "$kept")/"
 done
 
-once() {  # once OUTPUT ARGS...: one sweep; again with one worker if a worker died
-    local out=$1; shift
-    (cd "$WT" && MUJOCO_GL=disable PYTHONPATH="$WT" "$PY" -m symbench sweep "$@" --output "$out" \
-        --workers "${WORKERS:-2}") ||
-    (cd "$WT" && MUJOCO_GL=disable PYTHONPATH="$WT" "$PY" -m symbench sweep "$@" --output "$out" \
-        --workers 1)
+once() {  # once OUTPUT ARGS...: a one-worker sweep; once more if it failed (a worker died)
+    local out=$1 try; shift
+    for try in 1 2; do
+        (cd "$WT" && MUJOCO_GL=disable PYTHONPATH="$WT" "$PY" -m symbench sweep "$@" \
+            --output "$out" --workers 1) && return
+    done
 }
 
 # recorded OUTPUT SPLIT MODEL SEEDS ARGS...: whether OUTPUT holds the record of every robot
@@ -68,25 +68,30 @@ recorded() {
     done
 }
 
-# sweep OUTPUT --models LIST [--seeds LIST] ARGS... (--splits LIST among ARGS): a sweep per
-# split, model and pair of seeds, so that each of the two workers makes one run and ends. At
-# 7a8d9fb a sweep's worker keeps what its runs loaded: on magneto a worker reached 12 GB and
-# a one-worker sweep 24 GB (killed for memory, 2026-11-28), where each run alone fits.
+# sweep OUTPUT --models LIST [--seeds LIST] ARGS... (--splits LIST among ARGS): one
+# one-worker sweep per split, model and seed, WORKERS (2) of them at once, so that a split's
+# lone fifth seed shares the cores with the next model's first instead of leaving one idle
+# (about 20 minutes per gnn split on nona before, 2026-11-29). One run per process: at
+# 7a8d9fb a sweep's worker keeps what its runs loaded (on magneto a worker reached 12 GB and a
+# one-worker sweep 24 GB, killed for memory, 2026-11-28), where each run alone fits. Runs that
+# share a training (the generalization evaluators') take turns on its lock file.
 sweep() {
     local out=$1 models=$3 seeds=0,1,2,3,4 splits=iid; shift 3
     if [ "$1" = --seeds ]; then seeds=$2; shift 2; fi
-    local rest=() model split pair
+    local rest=() model split seed
     while [ $# -gt 0 ]; do
         if [ "$1" = --splits ]; then splits=$2; shift 2; else rest+=("$1"); shift; fi
     done
     for split in ${splits//,/ }; do  # a split's every model and seed first: publishable
         for model in ${models//,/ }; do
-            for pair in $(echo "$seeds" | tr , '\n' | paste -sd ',\n' -); do
-                recorded "$out" "$split" "$model" "$pair" "${rest[@]}" && continue
-                once "$out" --models "$model" --splits "$split" --seeds "$pair" "${rest[@]}"
+            for seed in ${seeds//,/ }; do
+                recorded "$out" "$split" "$model" "$seed" "${rest[@]}" && continue
+                while [ "$(jobs -rp | wc -l)" -ge "${WORKERS:-2}" ]; do wait -n; done
+                once "$out" --models "$model" --splits "$split" --seeds "$seed" "${rest[@]}" &
             done
         done
     done
+    wait  # the next phase may read this one's records
 }
 
 # 1-3. the small grid, robot by robot: a run's generalization evaluators train its model on
