@@ -218,7 +218,7 @@ def drawn_hexa(drawn_hexa_home, monkeypatch):
     return load_dataset("hexa-drawn")
 
 
-@pytest.fixture
+@pytest.fixture(scope="session")
 def make_record():
     return record_dict
 
@@ -232,6 +232,6 @@ def schema_1(record: dict) -> dict:
     return record
 
 
-@pytest.fixture
+@pytest.fixture(scope="session")
 def as_schema_1():
     return schema_1

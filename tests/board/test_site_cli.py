@@ -48,14 +48,16 @@ def test_no_records_is_a_one_line_error(workdir):
     assert not (workdir / "site").exists()
 
 
-def test_an_unreadable_record_is_a_one_line_error(results, workdir):
+def test_an_unreadable_record_is_a_one_line_error(results, workdir, own_copy):
+    results = own_copy(results)
     (results / "broken.json").write_text("{not json")
     result = invoke("leaderboard", "--results", results, "--html", "site")
     assert error_line(result, 1).startswith(f"Error: cannot read result record {results}/broken")
     assert not (workdir / "site").exists()
 
 
-def test_an_edited_record_is_a_one_line_error(results, workdir):
+def test_an_edited_record_is_a_one_line_error(results, workdir, own_copy):
+    results = own_copy(results)
     path = results / "sdnn-iid-seed0.json"
     record = json.loads(path.read_text())
     record["metrics"]["torque-error"]["rmse"] = 0.001  # better than measured

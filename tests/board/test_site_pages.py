@@ -168,7 +168,7 @@ def entry(site: Path, split: str, model: str) -> Page:
     return read_page(site / "boards" / link)
 
 
-def test_entry_pages_show_each_seeds_provenance_and_how_to_reproduce_it(site, results):
+def test_entry_pages_show_each_seeds_provenance_and_how_to_reproduce_it(site, results, board):
     page = entry(site, "iid", "ffnn")
     runs = runs_of(results, HEXA, "converge", "iid", "ffnn")
     text = " ".join(page.texts["provenance"])
@@ -189,7 +189,7 @@ def test_entry_pages_show_each_seeds_provenance_and_how_to_reproduce_it(site, re
     ]
     assert page.texts["verification"] == [
         "Verification status: sealed, seal matches; not on the published board (no "
-        f"{site.parent / 'board' / 'records' / ResultRecord.model_validate(r).key()}.json)"
+        f"{board / 'records' / ResultRecord.model_validate(r).key()}.json)"
         for r in runs
     ]
     gnn = entry(site, "iid", "gnn").texts["reproduce"]
@@ -208,7 +208,8 @@ def test_schema_1_records_are_shown_but_not_verified(site, results):
     assert page.texts["reproduce"][0].endswith("--protocol paper --evaluators torque-error")
 
 
-def test_entry_pages_say_whether_the_published_board_holds_the_record(results, board, tmp_path):
+def test_entry_pages_say_whether_the_published_board_holds_the_record(results, tmp_path):
+    board = tmp_path / "board"
     runs = {p.name: json.loads(p.read_text()) for p in results.glob("sdnn-iid-seed*.json")}
     keys = {s: ResultRecord.model_validate(runs[f"sdnn-iid-seed{s}.json"]).key() for s in SEEDS}
     (board / "records").mkdir(parents=True)
@@ -229,16 +230,18 @@ def test_entry_pages_say_whether_the_published_board_holds_the_record(results, b
     ]
 
 
-def test_building_twice_gives_the_same_bytes(site, results, board, tmp_path):
+def test_building_twice_gives_the_same_bytes(site, results, board, tmp_path, own_copy):
     first = snapshot(site)
     assert len(first) > 15
     build_site(results, tmp_path / "again", board)
     assert snapshot(tmp_path / "again") == first
-    build_site(results, site, board)  # over the previous build
-    assert snapshot(site) == first
+    earlier = own_copy(site)
+    build_site(results, earlier, board)  # over the previous build
+    assert snapshot(earlier) == first
 
 
-def test_a_rebuild_replaces_the_site_whole(site, results, board, tmp_path):
+def test_a_rebuild_replaces_the_site_whole(site, results, board, tmp_path, own_copy):
+    site, results = own_copy(site), own_copy(results)
     (site / "entries" / "stale.html").write_text("from an older build")
     (results / "nona-sdnn-seed0.json").unlink()
     written = build_site(results, site, board)

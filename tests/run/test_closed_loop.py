@@ -14,10 +14,10 @@ from symbench.core.robot.specs import load_robot
 from symbench.core.runs.runner import RunSpec, run
 from symbench.core.sim.scene.scenario import Scenario
 from symbench.core.sim.tracking.learned_control import expert_reference, track
+from symbench.core.sim.tracking.references import held_out_scenarios
 from symbench.core.training.checkpoints import checkpoint_sha256
 from symbench.core.training.resume import BEST_DIR
 from symbench.core.training.trained_model import TENSORS, TrainedModel
-from symbench.plugins.evaluators.closed_loop import held_out_scenarios
 
 ROBOTS = ("magneto", "hexa", "nona")
 HEADLINE = 0.1  # the preset's headline PD fraction

@@ -77,13 +77,14 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from symbench import ClosedLoopSetup, EvaluationContext, Push
-from symbench import held_out_scenarios as held_out_scenarios  # kept importable from here
 from symbench.plugins.evaluators.closed_loop_score import mean_interval, reference_score
+
+if TYPE_CHECKING:  # the simulation stack loads when a run evaluates, not with the command line
+    from symbench import EvaluationContext, Push
 
 NAME = "closed-loop"
 DESCRIPTION = (
@@ -104,6 +105,8 @@ def trainings(context: EvaluationContext) -> list[tuple[str | None, str, str]]:
 def evaluate(context: EvaluationContext) -> dict:
     trained_on = context.control_dataset()  # the noisy variant of a standard dataset
     trained = context.on_dataset(trained_on, context.split, "next")
+    from symbench import ClosedLoopSetup
+
     setup = ClosedLoopSetup(context.dataset, context.test_trajectories, context.preset.closed_loop)
     fractions = setup.fractions
     # None: the expert itself fell, no reference to track
