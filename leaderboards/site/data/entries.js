@@ -10604,6 +10604,1016 @@ window.SYMBENCH_ENTRIES = {
   "split": "control-rotation",
   "title": "sdnn (acc, torch)"
  },
+ "nona-climb-small-v7__converge__fraction-0.1__ffnn-leg__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--fraction-0-1",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__fraction-0.1__ffnn-leg__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "3",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.326 [0.315, 0.341]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.562 [0.545, 0.588]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.26 [1.11, 1.49]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "192 283",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
+    "steps",
+    "9 100 [8 500, 9 600]",
+    ""
+   ],
+   [
+    "epochs",
+    "159 [149, 168]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 1, patience 4",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "fraction-0.1",
+  "title": "ffnn-leg (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__fraction-0.1__ffnn__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--fraction-0-1",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__fraction-0.1__ffnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.520 [0.498, 0.532]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.897 [0.856, 0.925]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.29 [1.20, 1.36]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.23 [1.08, 1.40]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "168 731",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.081",
+    ""
+   ],
+   [
+    "steps",
+    "7 400 [4 800, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "129 [84, 175]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3, patience 2",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "fraction-0.1",
+  "title": "ffnn (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__fraction-0.1__gnn__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--fraction-0-1",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__fraction-0.1__gnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "4",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.454 [0.441, 0.468]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.782 [0.761, 0.804]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.21 [1.06, 1.38]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.37 [1.20, 1.55]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "6 300 [5 100, 7 500]",
+    ""
+   ],
+   [
+    "epochs",
+    "110 [89, 131]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "patience 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "fraction-0.1",
+  "title": "gnn (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__fraction-0.1__sdgnn__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--fraction-0-1",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__fraction-0.1__sdgnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "1-2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0868 [0.0764, 0.0949]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.150 [0.132, 0.163]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "3.38 × 10⁻⁷ [2.86 × 10⁻⁷, 4.16 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "9 100 [7 300, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "159 [128, 175]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 4, patience 1",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "fraction-0.1",
+  "title": "sdgnn (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__fraction-0.1__sdnn__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--fraction-0-1",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__fraction-0.1__sdnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "1-2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0855 [0.0766, 0.0926]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.147 [0.133, 0.158]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "3.13 × 10⁻⁷ [2.88 × 10⁻⁷, 3.34 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
+    "steps",
+    "8 000 [6 600, 9 400]",
+    ""
+   ],
+   [
+    "epochs",
+    "140 [116, 164]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 1, patience 4",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "fraction-0.1",
+  "title": "sdnn (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__fraction-0.25__ffnn-leg__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--fraction-0-25",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__fraction-0.25__ffnn-leg__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "3",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.201 [0.184, 0.219]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.347 [0.315, 0.382]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.940 [0.875, 1.011]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "192 283",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
+    "steps",
+    "7 900 [6 700, 9 200]",
+    ""
+   ],
+   [
+    "epochs",
+    "54.0 [45.8, 62.8]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 1, patience 4",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "fraction-0.25",
+  "title": "ffnn-leg (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__fraction-0.25__ffnn__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--fraction-0-25",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__fraction-0.25__ffnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.425 [0.400, 0.449]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.733 [0.689, 0.777]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.22 [1.06, 1.39]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.23 [1.09, 1.40]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "168 731",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.081",
+    ""
+   ],
+   [
+    "steps",
+    "8 800 [6 400, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "59.8 [43.4, 68.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 4, patience 1",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "fraction-0.25",
+  "title": "ffnn (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__fraction-0.25__gnn__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--fraction-0-25",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__fraction-0.25__gnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "4",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.332 [0.305, 0.360]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.573 [0.524, 0.623]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.01 [0.90, 1.12]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.21 [1.08, 1.34]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "6 000 [4 800, 8 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "40.8 [32.8, 54.4]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 1, patience 4",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "fraction-0.25",
+  "title": "gnn (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__fraction-0.25__sdgnn__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--fraction-0-25",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__fraction-0.25__sdgnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0436 [0.0407, 0.0465]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0751 [0.0702, 0.0801]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "2.84 × 10⁻⁷ [2.64 × 10⁻⁷, 3.15 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "68.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "fraction-0.25",
+  "title": "sdgnn (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__fraction-0.25__sdnn__acc__torch": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--fraction-0-25",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__fraction-0.25__sdnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "1",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0405 [0.0371, 0.0440]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0698 [0.0640, 0.0755]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "3.05 × 10⁻⁷ [2.75 × 10⁻⁷, 3.35 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "68.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "fraction-0.25",
+  "title": "sdnn (acc, torch)"
+ },
  "nona-climb-small-v7__converge__iid__ffnn-leg__acc__torch": {
   "board": "boards/nona__nona-climb-small-v7.html#converge--iid",
   "dataset": "nona-climb-small-v7",
