@@ -68,6 +68,24 @@ recorded() {
     done
 }
 
+# datasets ARGS...: the standard dataset of every robot (--robots) of the preset (--preset)
+# among ARGS, made with all workers before a sweep's first run: its one-run sweeps, started
+# two at once, would each simulate a missing one (hexa's paper data: 768 climbs of 10 s).
+datasets() {
+    local robots="" preset=small robot
+    while [ $# -gt 0 ]; do
+        case $1 in
+            --robots) robots=$2; shift 2 ;;
+            --preset) preset=$2; shift 2 ;;
+            *) shift ;;
+        esac
+    done
+    for robot in ${robots//,/ }; do
+        (cd "$WT" && MUJOCO_GL=disable PYTHONPATH="$WT" "$PY" -m symbench data generate \
+            --robot "$robot" --preset "$preset" --workers "${WORKERS:-2}" --no-progress)
+    done
+}
+
 # sweep OUTPUT --models LIST [--seeds LIST] ARGS... (--splits LIST among ARGS): one
 # one-worker sweep per split, model and seed, WORKERS (2) of them at once, so that a split's
 # lone fifth seed shares the cores with the next model's first instead of leaving one idle
@@ -78,7 +96,7 @@ recorded() {
 sweep() {
     local out=$1 models=$3 seeds=0,1,2,3,4 splits=iid; shift 3
     if [ "$1" = --seeds ]; then seeds=$2; shift 2; fi
-    local rest=() model split seed
+    local rest=() model split seed made=""
     while [ $# -gt 0 ]; do
         if [ "$1" = --splits ]; then splits=$2; shift 2; else rest+=("$1"); shift; fi
     done
@@ -86,6 +104,7 @@ sweep() {
         for model in ${models//,/ }; do
             for seed in ${seeds//,/ }; do
                 recorded "$out" "$split" "$model" "$seed" "${rest[@]}" && continue
+                [ -n "$made" ] || { datasets "${rest[@]}"; made=1; }
                 while [ "$(jobs -rp | wc -l)" -ge "${WORKERS:-2}" ]; do wait -n; done
                 once "$out" --models "$model" --splits "$split" --seeds "$seed" "${rest[@]}" &
             done
