@@ -3,8 +3,8 @@
 # commit the small board is made at. Every sweep skips the runs whose record exists, so the
 # same command resumes after an interruption; the published records and those kept in
 # ../pending/ (committed between working sessions, before their group is complete) are
-# copied into the worktree first. A sweep that
-# failed (a worker out of memory) is run once more.
+# copied into the worktree first. A run that
+# failed beside another (out of memory) runs again alone before the next phase starts.
 #
 #   leaderboards/sweeps/board-v7.sh [WORKTREE]        (default: ../wt-board7m beside the repo)
 set -uo pipefail
@@ -33,12 +33,17 @@ for kept in "$REPO"/leaderboards/pending/*/; do
     cp -n "$kept"*.json "$WT/$(basename "$kept")/"
 done
 
-once() {  # once OUTPUT ARGS...: a one-worker sweep; once more if it failed (a worker died)
-    local out=$1 try; shift
-    for try in 1 2; do
-        (cd "$WT" && MUJOCO_GL=disable PYTHONPATH="$WT" "$PY" -m symbench sweep "$@" \
-            --output "$out" --workers 1) && return
-    done
+one_sweep() {  # one_sweep OUTPUT ARGS...: a one-worker sweep into OUTPUT
+    local out=$1; shift
+    (cd "$WT" && MUJOCO_GL=disable PYTHONPATH="$WT" "$PY" -m symbench sweep "$@" \
+        --output "$out" --workers 1)
+}
+
+FAILED=$(mktemp)  # the one-run sweeps that failed beside another, a line each: OUTPUT ARGS...
+trap 'rm -f "$FAILED" "$FAILED.retry"' EXIT
+
+once() {  # once OUTPUT ARGS...: a one-worker sweep, noted in $FAILED when it fails
+    one_sweep "$@" || echo "$*" >> "$FAILED"
 }
 
 # recorded OUTPUT SPLIT MODEL SEEDS ARGS...: whether OUTPUT holds the record of every robot
@@ -111,6 +116,13 @@ sweep() {
         done
     done
     wait  # the next phase may read this one's records
+    # a run that failed beside another (out of memory: hexa's paper runs peak near 10 GB)
+    # runs again alone; one that fails alone too waits for the next session
+    local job
+    mv "$FAILED" "$FAILED.retry" && : > "$FAILED"
+    while read -r -a job; do
+        one_sweep "${job[@]}" || echo "failed alone too: ${job[*]}" >&2
+    done < "$FAILED.retry"
 }
 
 # 1-3. the small grid, robot by robot: a run's generalization evaluators train its model on
