@@ -51,19 +51,23 @@ once() {  # once OUTPUT ARGS...: a one-worker sweep, noted in $FAILED when it fa
 # <model>__<variant>__<backend>__<protocol>[__p<N>]__seed<S>.json), so that a resumed sweep
 # passes a finished group without starting Python (3 s a group, 10 to 20 minutes a session).
 # A name it does not foresee only means the sweep is asked, and finds the records itself.
+option() {  # option NAME DEFAULT ARGS...: the value given to NAME among ARGS, else DEFAULT
+    local name=$1 value=$2; shift 2
+    while [ $# -gt 0 ]; do
+        if [ "$1" = "$name" ] && [ $# -gt 1 ]; then value=$2; shift 2; else shift; fi
+    done
+    echo "$value"
+}
+
 recorded() {
     local out=$1 split=$2 model=$3 seeds=$4; shift 4
-    local robots="" preset=small backend=torch protocol=converge size="" robot seed
-    while [ $# -gt 0 ]; do
-        case $1 in
-            --robots) robots=$2; shift 2 ;;
-            --preset) preset=$2; shift 2 ;;
-            --backends) backend=$2; shift 2 ;;
-            --protocol) protocol=$2; shift 2 ;;
-            --parameters) size=__p$2; shift 2 ;;
-            *) shift ;;
-        esac
-    done
+    local robots preset backend protocol size robot seed
+    robots=$(option --robots "" "$@")
+    preset=$(option --preset small "$@")
+    backend=$(option --backends torch "$@")
+    protocol=$(option --protocol converge "$@")
+    size=$(option --parameters "" "$@")
+    [ -z "$size" ] || size=__p$size
     [ -n "$robots" ] || return 1
     for robot in ${robots//,/ }; do
         for seed in ${seeds//,/ }; do
@@ -77,15 +81,9 @@ recorded() {
 # among ARGS, made with all workers before a sweep's first run: its one-run sweeps, started
 # two at once, would each simulate a missing one (hexa's paper data: 768 climbs of 10 s).
 datasets() {
-    local robots="" preset=small robot
-    while [ $# -gt 0 ]; do
-        case $1 in
-            --robots) robots=$2; shift 2 ;;
-            --preset) preset=$2; shift 2 ;;
-            *) shift ;;
-        esac
-    done
-    for robot in ${robots//,/ }; do
+    local robot preset
+    preset=$(option --preset small "$@")
+    for robot in $(option --robots "" "$@" | tr , ' '); do
         (cd "$WT" && MUJOCO_GL=disable PYTHONPATH="$WT" "$PY" -m symbench data generate \
             --robot "$robot" --preset "$preset" --workers "${WORKERS:-2}" --no-progress)
     done
