@@ -137,21 +137,23 @@ sweep results-matched --models $MODELS --robots nona,magneto --splits iid --para
     --evaluators torque-error,equivariance,invariance,image-overlap
 # 5. the JAX entries
 sweep results-jax --models sdnn,ffnn --backends jax --robots hexa --splits iid --evaluators $ALL
-# 6. the paper board (hexa): 50 000 cosine steps, 3 seeds
-sweep results-paper --models $MODELS --seeds 0,1,2 --robots hexa --preset paper --protocol cosine \
-    --max-steps 50000 --splits iid,unseen-rotation --evaluators $ALL
-sweep results-paper --models $MODELS --seeds 0,1,2 --robots hexa --preset paper --protocol cosine \
-    --max-steps 50000 --splits control-rotation,fraction-0.1 --evaluators $OPEN
-# 7. the studies again on v7 (each publishes to leaderboards/studies/<name>-v7)
+# 6. the studies again on v7 (each publishes to leaderboards/studies/<name>-v7): before the
+# paper board, whose 12 core-hours span sessions, since each study completes within one
 sweep results-asymmetry --models sdnn,sdgnn,ffnn --robots hexa-asym-0.05,hexa-asym-0.1,hexa-asym-0.2 \
     --splits iid --evaluators torque-error,equivariance,data-symmetry
 sweep results-library --models e2cnn-mlp --robots hexa --splits iid,unseen-rotation \
     --evaluators torque-error,equivariance,invariance
 sweep results-transfer --models sdnn,sdgnn,ffnn --robots magneto,hexa,nona --preset transfer \
-    --splits unseen-inclination,unseen-gait --evaluators torque-error,equivariance
+    --splits unseen-inclination,control-inclination,unseen-gait,control-gait \
+    --evaluators torque-error,equivariance,image-overlap,generalization-gap
 sweep results-mirror --models sdnn --size mirror=1 --robots hexa --splits iid,unseen-rotation,fraction-0.1 \
     --evaluators torque-error,equivariance,invariance
 sweep results-mirror --models sdnn --size mirror=1 --robots nona,magneto --splits iid,fraction-0.1 \
     --evaluators torque-error,equivariance,invariance
 sweep results-mirror --models sdnn --size mirror=1 --robots hexa --preset transfer --splits unseen-gait \
     --evaluators torque-error,equivariance
+# 7. the paper board (hexa): 50 000 cosine steps, 3 seeds
+sweep results-paper --models $MODELS --seeds 0,1,2 --robots hexa --preset paper --protocol cosine \
+    --max-steps 50000 --splits iid,unseen-rotation --evaluators $ALL
+sweep results-paper --models $MODELS --seeds 0,1,2 --robots hexa --preset paper --protocol cosine \
+    --max-steps 50000 --splits control-rotation,fraction-0.1 --evaluators $OPEN
