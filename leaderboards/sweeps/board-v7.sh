@@ -141,6 +141,9 @@ sweep results-jax --models sdnn,ffnn --backends jax --robots hexa --splits iid -
 # paper board, whose 12 core-hours span sessions, since each study completes within one
 sweep results-asymmetry --models sdnn,sdgnn,ffnn --robots hexa-asym-0.05,hexa-asym-0.1,hexa-asym-0.2 \
     --splits iid --evaluators torque-error,equivariance,data-symmetry
+# A = 0: the board's own sdnn and sdgnn records; ffnn again, with the data's own asymmetry
+sweep results-asymmetry --models ffnn --robots hexa --splits iid \
+    --evaluators torque-error,equivariance,data-symmetry
 sweep results-library --models e2cnn-mlp --robots hexa --splits iid,unseen-rotation \
     --evaluators torque-error,equivariance,invariance
 sweep results-transfer --models sdnn,sdgnn,ffnn --robots magneto,hexa,nona --preset transfer \
