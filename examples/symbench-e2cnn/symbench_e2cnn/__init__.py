@@ -17,6 +17,8 @@ def symbench_models() -> list:
             equivariant=True,  # the library's layers make it so; the kit holds it to it
             build=Lazy("symbench_e2cnn.network:build"),
             learning_rate=1e-3,
+            # `symbench tune --model e2cnn-mlp --robot hexa --width-scales 1` on hexa-climb-small-v7
+            learning_rates={"hexa": 3e-3},
             description="MLP of e2cnn's C_n-equivariant linear maps on regular fields (legs)",
             widths=("fields",),
         )
