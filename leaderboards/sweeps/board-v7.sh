@@ -144,6 +144,8 @@ sweep results-asymmetry --models sdnn,sdgnn,ffnn --robots hexa-asym-0.05,hexa-as
 # A = 0: the board's own sdnn and sdgnn records; ffnn again, with the data's own asymmetry
 sweep results-asymmetry --models ffnn --robots hexa --splits iid \
     --evaluators torque-error,equivariance,data-symmetry
+# e2cnn-mlp is a distribution of its own, the installed one (examples/symbench-e2cnn, 0.2.0:
+# tuned on hexa v7), whose version and source hash its records carry
 sweep results-library --models e2cnn-mlp --robots hexa --splits iid,unseen-rotation \
     --evaluators torque-error,equivariance,invariance
 sweep results-transfer --models sdnn,sdgnn,ffnn --robots magneto,hexa,nona --preset transfer \
