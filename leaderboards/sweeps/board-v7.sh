@@ -25,8 +25,23 @@ FRACTIONS=fraction-0.1,fraction-0.25,fraction-0.5,fraction-0.75
 [ -d "$WT" ] || git -C "$REPO" worktree add --detach "$WT" "$COMMIT"
 [ "$(git -C "$WT" rev-parse --short=7 HEAD)" = "$COMMIT" ] || { echo "$WT is not at $COMMIT" >&2; exit 1; }
 [ -z "$(git -C "$WT" status --porcelain --untracked-files=no)" ] || { echo "$WT is not clean" >&2; exit 1; }
-mkdir -p "$WT/results"
-cp -n "$REPO"/leaderboards/records/*-v7__*.json "$WT/results/"
+# published records back into the output folders whose sweeps made them, so that a fresh
+# worktree skips them
+restore() {  # restore OUTPUT RECORDS...
+    local out=$1; shift
+    mkdir -p "$WT/$out"
+    for record in "$@"; do [ -e "$record" ] && cp -n "$record" "$WT/$out/"; done
+    return 0
+}
+restore results "$REPO"/leaderboards/records/*-v7__*.json
+restore results-matched "$REPO"/leaderboards/records/*-v7__*__p100000__*.json
+restore results-jax "$REPO"/leaderboards/records/*-v7__*__jax__*.json
+restore results-paper "$REPO"/leaderboards/records/*-paper-v7__*.json
+STUDIES=$REPO/leaderboards/studies
+restore results-asymmetry "$STUDIES"/asymmetry-v7/records/*.json
+restore results-library "$STUDIES"/library-baseline-v7/records/*.json
+restore results-transfer "$STUDIES"/transfer-v7/records/*.json
+restore results-mirror "$STUDIES"/mirror-group-v7/records/*.json
 for kept in "$REPO"/leaderboards/pending/*/; do
     [ -d "$kept" ] || continue
     mkdir -p "$WT/$(basename "$kept")"

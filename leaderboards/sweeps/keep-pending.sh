@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Before a working session ends: copies the records of WORKTREE's output folders that are not
 # published into leaderboards/pending/<output folder>/ (to be committed), and drops from there
-# those published since; board-v7.sh copies them back.
+# those published since; board-v7.sh copies them back. Published means the same bytes in the
+# board's records/ or a study's: a study's run may share its file name with a board record
+# (sdnn with --size mirror=1, or a board run made again with another evaluator) and still be
+# a different record.
 #
 #   leaderboards/sweeps/keep-pending.sh [WORKTREE]    (default: ../wt-board7m beside the repo)
 set -euo pipefail
@@ -10,15 +13,24 @@ REPO=$(cd "$(dirname "$0")/../.." && pwd)
 WT=${1:-$(dirname "$REPO")/wt-board7m}
 PENDING=$REPO/leaderboards/pending
 
+published() {  # published RECORD: whether a board or a study holds RECORD's very bytes
+    local name copy
+    name=$(basename "$1")
+    for copy in "$REPO/leaderboards/records/$name" "$REPO"/leaderboards/studies/*/records/"$name"; do
+        if cmp -s "$copy" "$1"; then return 0; fi
+    done
+    return 1
+}
+
 for out in "$WT"/results*/; do
     for record in "$out"*.json; do
         [ -e "$record" ] || continue
-        [ -e "$REPO/leaderboards/records/$(basename "$record")" ] && continue
+        published "$record" && continue
         mkdir -p "$PENDING/$(basename "$out")"
         cp "$record" "$PENDING/$(basename "$out")/"
     done
 done
 for kept in "$PENDING"/*/*.json; do
     [ -e "$kept" ] || continue
-    if [ -e "$REPO/leaderboards/records/$(basename "$kept")" ]; then rm "$kept"; fi
+    if published "$kept"; then rm "$kept"; fi
 done
