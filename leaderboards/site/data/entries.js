@@ -8180,6 +8180,107 @@ window.SYMBENCH_ENTRIES = {
   "split": "iid",
   "title": "ffnn-leg (acc, torch)"
  },
+ "magneto-climb-small-v7__converge__iid__ffnn-leg__acc__torch__matched-100000": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--matched-100000--iid",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__iid__ffnn-leg__acc__torch__matched-100000.html",
+  "metrics": [
+   [
+    "rank",
+    "3",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.165 [0.160, 0.172]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.130 [0.125, 0.135]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.330 [0.292, 0.388]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "100 002",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "17.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "iid",
+  "title": "ffnn-leg (acc, torch), matched at 100 000 parameters"
+ },
  "magneto-climb-small-v7__converge__iid__ffnn__acc__torch": {
   "board": "boards/magneto__magneto-climb-small-v7.html#converge--iid",
   "dataset": "magneto-climb-small-v7",
@@ -8280,6 +8381,107 @@ window.SYMBENCH_ENTRIES = {
   "robot": "magneto",
   "split": "iid",
   "title": "ffnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__iid__ffnn__acc__torch__matched-100000": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--matched-100000--iid",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__iid__ffnn__acc__torch__matched-100000.html",
+  "metrics": [
+   [
+    "rank",
+    "4",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.341 [0.320, 0.367]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.268 [0.252, 0.289]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.00 [0.97, 1.05]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.26 [1.22, 1.30]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "99 847",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.027",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "17.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "iid",
+  "title": "ffnn (acc, torch), matched at 100 000 parameters"
  },
  "magneto-climb-small-v7__converge__iid__gnn__acc__torch": {
   "board": "boards/magneto__magneto-climb-small-v7.html#converge--iid",
@@ -8382,6 +8584,107 @@ window.SYMBENCH_ENTRIES = {
   "split": "iid",
   "title": "gnn (acc, torch)"
  },
+ "magneto-climb-small-v7__converge__iid__gnn__acc__torch__matched-100000": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--matched-100000--iid",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__iid__gnn__acc__torch__matched-100000.html",
+  "metrics": [
+   [
+    "rank",
+    "5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.463 [0.439, 0.496]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.364 [0.346, 0.390]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.974 [0.814, 1.134]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.40 [1.27, 1.55]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "99 381",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.027",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "17.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "iid",
+  "title": "gnn (acc, torch), matched at 100 000 parameters"
+ },
  "magneto-climb-small-v7__converge__iid__sdgnn__acc__torch": {
   "board": "boards/magneto__magneto-climb-small-v7.html#converge--iid",
   "dataset": "magneto-climb-small-v7",
@@ -8483,6 +8786,107 @@ window.SYMBENCH_ENTRIES = {
   "split": "iid",
   "title": "sdgnn (acc, torch)"
  },
+ "magneto-climb-small-v7__converge__iid__sdgnn__acc__torch__matched-100000": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--matched-100000--iid",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__iid__sdgnn__acc__torch__matched-100000.html",
+  "metrics": [
+   [
+    "rank",
+    "2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.139 [0.133, 0.145]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.109 [0.104, 0.114]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "2.74 × 10⁻⁷ [2.71 × 10⁻⁷, 2.77 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "100 299",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "17.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "iid",
+  "title": "sdgnn (acc, torch), matched at 100 000 parameters"
+ },
  "magneto-climb-small-v7__converge__iid__sdnn__acc__torch": {
   "board": "boards/magneto__magneto-climb-small-v7.html#converge--iid",
   "dataset": "magneto-climb-small-v7",
@@ -8583,6 +8987,107 @@ window.SYMBENCH_ENTRIES = {
   "robot": "magneto",
   "split": "iid",
   "title": "sdnn (acc, torch)"
+ },
+ "magneto-climb-small-v7__converge__iid__sdnn__acc__torch__matched-100000": {
+  "board": "boards/magneto__magneto-climb-small-v7.html#converge--matched-100000--iid",
+  "dataset": "magneto-climb-small-v7",
+  "entry": "entries/magneto-climb-small-v7__converge__iid__sdnn__acc__torch__matched-100000.html",
+  "metrics": [
+   [
+    "rank",
+    "1",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.119 [0.113, 0.123]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0933 [0.0887, 0.0966]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "2.88 × 10⁻⁷ [2.52 × 10⁻⁷, 3.25 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "99 810",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "17.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "magneto",
+  "split": "iid",
+  "title": "sdnn (acc, torch), matched at 100 000 parameters"
  },
  "magneto-climb-small-v7__converge__unseen-heading__ffnn-leg__acc__torch": {
   "board": "boards/magneto__magneto-climb-small-v7.html#converge--unseen-heading",
@@ -12725,6 +13230,107 @@ window.SYMBENCH_ENTRIES = {
   "split": "iid",
   "title": "ffnn-leg (acc, torch)"
  },
+ "nona-climb-small-v7__converge__iid__ffnn-leg__acc__torch__matched-100000": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--matched-100000--iid",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__iid__ffnn-leg__acc__torch__matched-100000.html",
+  "metrics": [
+   [
+    "rank",
+    "3",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0806 [0.0786, 0.0833]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.139 [0.136, 0.143]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.709 [0.605, 0.803]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "100 303",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.001",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "17.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "iid",
+  "title": "ffnn-leg (acc, torch), matched at 100 000 parameters"
+ },
  "nona-climb-small-v7__converge__iid__ffnn__acc__torch": {
   "board": "boards/nona__nona-climb-small-v7.html#converge--iid",
   "dataset": "nona-climb-small-v7",
@@ -12825,6 +13431,107 @@ window.SYMBENCH_ENTRIES = {
   "robot": "nona",
   "split": "iid",
   "title": "ffnn (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__iid__ffnn__acc__torch__matched-100000": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--matched-100000--iid",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__iid__ffnn__acc__torch__matched-100000.html",
+  "metrics": [
+   [
+    "rank",
+    "5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.197 [0.183, 0.211]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.340 [0.318, 0.362]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.02 [0.87, 1.19]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.14 [1.10, 1.18]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "100 157",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.081",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "17.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "iid",
+  "title": "ffnn (acc, torch), matched at 100 000 parameters"
  },
  "nona-climb-small-v7__converge__iid__gnn__acc__torch": {
   "board": "boards/nona__nona-climb-small-v7.html#converge--iid",
@@ -12927,6 +13634,107 @@ window.SYMBENCH_ENTRIES = {
   "split": "iid",
   "title": "gnn (acc, torch)"
  },
+ "nona-climb-small-v7__converge__iid__gnn__acc__torch__matched-100000": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--matched-100000--iid",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__iid__gnn__acc__torch__matched-100000.html",
+  "metrics": [
+   [
+    "rank",
+    "4",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.129 [0.114, 0.142]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.222 [0.198, 0.245]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.717 [0.683, 0.760]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.38 [1.25, 1.53]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "99 381",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "9 900 [9 700, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "16.8 [16.4, 17.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 4, patience 1",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "iid",
+  "title": "gnn (acc, torch), matched at 100 000 parameters"
+ },
  "nona-climb-small-v7__converge__iid__sdgnn__acc__torch": {
   "board": "boards/nona__nona-climb-small-v7.html#converge--iid",
   "dataset": "nona-climb-small-v7",
@@ -13028,6 +13836,107 @@ window.SYMBENCH_ENTRIES = {
   "split": "iid",
   "title": "sdgnn (acc, torch)"
  },
+ "nona-climb-small-v7__converge__iid__sdgnn__acc__torch__matched-100000": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--matched-100000--iid",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__iid__sdgnn__acc__torch__matched-100000.html",
+  "metrics": [
+   [
+    "rank",
+    "1-2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0255 [0.0245, 0.0265]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0440 [0.0426, 0.0453]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "3.35 × 10⁻⁷ [2.81 × 10⁻⁷, 3.88 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "100 299",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "17.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "iid",
+  "title": "sdgnn (acc, torch), matched at 100 000 parameters"
+ },
  "nona-climb-small-v7__converge__iid__sdnn__acc__torch": {
   "board": "boards/nona__nona-climb-small-v7.html#converge--iid",
   "dataset": "nona-climb-small-v7",
@@ -13128,6 +14037,107 @@ window.SYMBENCH_ENTRIES = {
   "robot": "nona",
   "split": "iid",
   "title": "sdnn (acc, torch)"
+ },
+ "nona-climb-small-v7__converge__iid__sdnn__acc__torch__matched-100000": {
+  "board": "boards/nona__nona-climb-small-v7.html#converge--matched-100000--iid",
+  "dataset": "nona-climb-small-v7",
+  "entry": "entries/nona-climb-small-v7__converge__iid__sdnn__acc__torch__matched-100000.html",
+  "metrics": [
+   [
+    "rank",
+    "1-2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0241 [0.0236, 0.0246]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0416 [0.0407, 0.0424]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "3.13 × 10⁻⁷ [2.86 × 10⁻⁷, 3.34 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "99 810",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0015",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "17.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "nona",
+  "split": "iid",
+  "title": "sdnn (acc, torch), matched at 100 000 parameters"
  },
  "nona-climb-small-v7__converge__unseen-heading__ffnn-leg__acc__torch": {
   "board": "boards/nona__nona-climb-small-v7.html#converge--unseen-heading",
