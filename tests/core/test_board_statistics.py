@@ -100,3 +100,25 @@ def test_the_summary_aggregates_over_datasets_and_splits(tmp_path, make_record):
     assert "Over the 2 of 2 (dataset, split) pairs" in summary
     assert "| sdnn | - | 1.00 [1.00, 1.00] |" in summary  # better on every seed of both
     assert "| ffnn | 0.00 [0.00, 0.00] | - |" in summary
+
+
+def test_an_entry_on_only_some_pairs_is_left_out_of_the_aggregate(tmp_path, make_record):
+    """A second backend run on one pair (the board's JAX entries) must neither empty the
+    aggregate nor enter it; it is named instead."""
+    runs = [
+        (model, "torch", split, seed, rmse * scale * (1 + seed / 10))
+        for split, scale in (("iid", 1.0), ("unseen-rotation", 10.0))
+        for model, rmse in (("sdnn", 0.1), ("ffnn", 0.5))
+        for seed in range(3)
+    ] + [("sdnn", "jax", "iid", seed, 0.01) for seed in range(3)]
+    for i, (model, backend, split, seed, rmse) in enumerate(runs):
+        record = make_record(model=model, backend=backend, split=split, seed=seed, rmse=rmse)
+        write_record(record, tmp_path / f"r{i}.json")
+    write_leaderboard(tmp_path, tmp_path / "out")
+    summary = (tmp_path / "out" / "summary.md").read_text()
+    assert "Over the 2 of 2 (dataset, split) pairs" in summary
+    assert "Left out, as they ran on only some pairs: sdnn (acc, jax) (1 of 2)." in summary
+    # normalized by the best mean of the entries kept: sdnn (torch) is 1, not 10
+    assert "| sdnn (acc, torch) | 1.0" in summary
+    aggregate = summary.split("## Aggregate")[1].split("\n#")[0]
+    assert "| sdnn (acc, torch) | - |" in aggregate and "sdnn (acc, jax) |" not in aggregate

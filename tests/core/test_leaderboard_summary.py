@@ -54,8 +54,9 @@ def test_sample_efficiency_curve_ends_with_iid_at_one(tmp_path, make_record):
         dict(model="sdnn", split=split, seed=s, rmse=r)
         for split, r in (("fraction-0.25", 0.4), ("iid", 0.1))
         for s in range(3)
-    ]
+    ] + [dict(model="sdnn", backend="jax", split="iid", seed=s, rmse=0.1) for s in range(3)]
     write_runs(tmp_path, make_record, runs)
+    # the jax entry has the iid point alone: no curve
     (curve,) = sample_efficiency_series(aggregate(load_records(tmp_path)), "hexa")
     assert (curve.model, curve.label) == ("sdnn", "sdnn (acc, torch)")
     assert list(curve.points) == [0.25, 1.0]

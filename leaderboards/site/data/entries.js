@@ -3036,7 +3036,7 @@ window.SYMBENCH_ENTRIES = {
   "metrics": [
    [
     "rank",
-    "3",
+    "4",
     "lower"
    ],
    [
@@ -3231,6 +3231,107 @@ window.SYMBENCH_ENTRIES = {
   "split": "iid",
   "title": "ffnn-leg (acc, torch), matched at 100 000 parameters"
  },
+ "hexa-climb-small-v7__converge__iid__ffnn__acc__jax": {
+  "board": "boards/hexa__hexa-climb-small-v7.html#converge--iid",
+  "dataset": "hexa-climb-small-v7",
+  "entry": "entries/hexa-climb-small-v7__converge__iid__ffnn__acc__jax.html",
+  "metrics": [
+   [
+    "rank",
+    "5-7",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.228 [0.208, 0.253]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.325 [0.310, 0.338]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.403 [0.392, 0.413]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "jax",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.291 [0.266, 0.323]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.07 [0.83, 1.31]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.36 [1.29, 1.43]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0.0125 [0.0000, 0.0250]",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "0.958 [0.937, 0.977]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0552 [0.0512, 0.0593]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "157 970",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.027",
+    ""
+   ],
+   [
+    "steps",
+    "9 500 [8 700, 10 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "16.2 [15.0, 17.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3, patience 2",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "hexa",
+  "split": "iid",
+  "title": "ffnn (acc, jax)"
+ },
  "hexa-climb-small-v7__converge__iid__ffnn__acc__torch": {
   "board": "boards/hexa__hexa-climb-small-v7.html#converge--iid",
   "dataset": "hexa-climb-small-v7",
@@ -3238,7 +3339,7 @@ window.SYMBENCH_ENTRIES = {
   "metrics": [
    [
     "rank",
-    "4-5",
+    "5-7",
     "lower"
    ],
    [
@@ -3440,7 +3541,7 @@ window.SYMBENCH_ENTRIES = {
   "metrics": [
    [
     "rank",
-    "4-5",
+    "5-7",
     "lower"
    ],
    [
@@ -3642,7 +3743,7 @@ window.SYMBENCH_ENTRIES = {
   "metrics": [
    [
     "rank",
-    "2",
+    "3",
     "lower"
    ],
    [
@@ -3837,6 +3938,107 @@ window.SYMBENCH_ENTRIES = {
   "split": "iid",
   "title": "sdgnn (acc, torch), matched at 100 000 parameters"
  },
+ "hexa-climb-small-v7__converge__iid__sdnn__acc__jax": {
+  "board": "boards/hexa__hexa-climb-small-v7.html#converge--iid",
+  "dataset": "hexa-climb-small-v7",
+  "entry": "entries/hexa-climb-small-v7__converge__iid__sdnn__acc__jax.html",
+  "metrics": [
+   [
+    "rank",
+    "1-2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0476 [0.0454, 0.0497]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.527 [0.486, 0.559]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.599 [0.539, 0.646]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "jax",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0608 [0.0580, 0.0634]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "3.33 × 10⁻⁷ [2.95 × 10⁻⁷, 3.77 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0.244 [0.163, 0.319]",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "1.30 [1.20, 1.38]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0343 [0.0317, 0.0368]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0135",
+    ""
+   ],
+   [
+    "steps",
+    "10 000",
+    ""
+   ],
+   [
+    "epochs",
+    "17.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 5",
+    ""
+   ],
+   [
+    "seeds",
+    "5",
+    ""
+   ]
+  ],
+  "protocol": "converge",
+  "robot": "hexa",
+  "split": "iid",
+  "title": "sdnn (acc, jax)"
+ },
  "hexa-climb-small-v7__converge__iid__sdnn__acc__torch": {
   "board": "boards/hexa__hexa-climb-small-v7.html#converge--iid",
   "dataset": "hexa-climb-small-v7",
@@ -3844,7 +4046,7 @@ window.SYMBENCH_ENTRIES = {
   "metrics": [
    [
     "rank",
-    "1",
+    "1-2",
     "lower"
    ],
    [

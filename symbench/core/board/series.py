@@ -51,7 +51,8 @@ def _curves(rows: pd.DataFrame, x: str, keys: list[str], extra: list[str]) -> li
 def sample_efficiency_series(table: pd.DataFrame, robot: str) -> list[Series[float]]:
     """Test RMSE against training fraction, a series per model entry (and dataset and
     protocol, when the robot has several); none without fractions. `iid` is the same split
-    with all of its training climbs, so it is the point at 1."""
+    with all of its training climbs, so it is the point at 1; an entry with that point
+    alone (run on `iid` only, as the board's JAX entries) is no curve and is left out."""
     rows = table[table.robot == robot]
     fractions = rows.split.str.startswith("fraction-")
     if not fractions.any():
@@ -61,7 +62,8 @@ def sample_efficiency_series(table: pd.DataFrame, robot: str) -> list[Series[flo
         fraction=rows.split.str.removeprefix("fraction-").replace("iid", "1").astype(float)
     )
     extra = several(rows, ["dataset", "protocol"])
-    return _curves(rows, "fraction", [*ENTRY, "dataset", "protocol"], extra)
+    curves = _curves(rows, "fraction", [*ENTRY, "dataset", "protocol"], extra)
+    return [curve for curve in curves if len(curve.points) > 1]
 
 
 def asymmetry_series(

@@ -90,28 +90,39 @@ def closed_loop_section(table: pd.DataFrame) -> list[str]:
 
 
 def aggregate_section(table: pd.DataFrame) -> list[str]:
-    """One protocol's models over every dataset and split that all of them ran with at
-    least two common seeds: the interquartile mean of normalized errors and the probability
-    of improvement, with stratified bootstrap intervals (`statistics.across_tasks`)."""
-    columns = _column_order(table)
+    """One protocol's models that ran on every dataset and split of the board, over the
+    pairs where they share at least two seeds: the interquartile mean of normalized errors
+    and the probability of improvement, with stratified bootstrap intervals
+    (`statistics.across_tasks`). An entry run on only some pairs (a second backend on one
+    robot) is named and left out, so it neither empties the aggregate nor skews it."""
     groups = table.groupby(["dataset", "split"], sort=True)
+    coverage = table.drop_duplicates(["label", "dataset", "split"]).groupby("label").size()
+    columns = [c for c in _column_order(table) if coverage[c] == groups.ngroups]
+    partial = [c for c in _column_order(table) if c not in columns]
     tasks = []
     for _, part in groups:
-        if sorted(part.label) == sorted(columns):
-            rmse = {r.label: r.per_seed["rmse_Nm"] for _, r in part.iterrows()}
-            by_seed = pd.DataFrame(rmse)[columns].dropna()
-            tasks += [by_seed] if len(by_seed) >= 2 else []
+        rmse = {r.label: r.per_seed["rmse_Nm"] for _, r in part.iterrows() if r.label in columns}
+        by_seed = pd.DataFrame(rmse)[columns].dropna()
+        tasks += [by_seed] if len(by_seed) >= 2 else []
     if len(columns) < 2 or len(tasks) < 2:
         return []
     result = across_tasks(tasks)
+    left_out = (
+        " Left out, as they ran on only some pairs: "
+        + ", ".join(f"{c} ({coverage[c]} of {groups.ngroups})" for c in partial)
+        + "."
+        if partial
+        else ""
+    )
     lines = [
         "## Aggregate over datasets and splits: normalized test RMSE",
         "",
         "A seed's normalized error is its test RMSE over the lowest mean test RMSE of any "
         f"model on the same dataset and split (1: that best mean). Over the {result.tasks} "
-        f"of {groups.ngroups} (dataset, split) pairs that every model ran with at least two "
-        f"common seeds, {result.seeds} (pair, seed) values per model; 95 % stratified "
-        f"bootstrap intervals ({RESAMPLES} resamples of the seeds within each pair).",
+        f"of {groups.ngroups} (dataset, split) pairs where the models that ran on every pair "
+        f"share at least two seeds, {result.seeds} (pair, seed) values per model; 95 % "
+        f"stratified bootstrap intervals ({RESAMPLES} resamples of the seeds within each "
+        f"pair).{left_out}",
         "",
         "| model | interquartile mean [95 % CI] |",
         "|---|---|",
