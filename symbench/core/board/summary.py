@@ -97,8 +97,9 @@ def aggregate_section(table: pd.DataFrame) -> list[str]:
     robot) is named and left out, so it neither empties the aggregate nor skews it."""
     groups = table.groupby(["dataset", "split"], sort=True)
     coverage = table.drop_duplicates(["label", "dataset", "split"]).groupby("label").size()
-    columns = [c for c in _column_order(table) if coverage[c] == groups.ngroups]
-    partial = [c for c in _column_order(table) if c not in columns]
+    order = _column_order(table)
+    columns = [c for c in order if coverage[c] == groups.ngroups]
+    partial = [c for c in order if c not in columns]
     tasks = []
     for _, part in groups:
         rmse = {r.label: r.per_seed["rmse_Nm"] for _, r in part.iterrows() if r.label in columns}
