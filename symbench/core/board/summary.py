@@ -102,7 +102,7 @@ def aggregate_section(table: pd.DataFrame) -> list[str]:
     partial = [c for c in order if c not in columns]
     tasks = []
     for _, part in groups:
-        rmse = {r.label: r.per_seed["rmse_Nm"] for _, r in part.iterrows() if r.label in columns}
+        rmse = {r.label: r.per_seed["rmse_Nm"] for _, r in part.iterrows()}
         by_seed = pd.DataFrame(rmse)[columns].dropna()
         tasks += [by_seed] if len(by_seed) >= 2 else []
     if len(columns) < 2 or len(tasks) < 2:
