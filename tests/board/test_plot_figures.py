@@ -124,6 +124,29 @@ def test_axis_labels_are_words_not_column_names():
     assert ax.get_ylabel() == "test torque RMSE (N m, log scale)"
 
 
+def test_a_log_axis_puts_each_value_at_its_power_of_ten():
+    """The RMSE axes draw log10 of the values on a linear axis and label it as a log axis:
+    a labelled tick at each power of ten in view, ticks at 2 to 9 times it, named when fewer
+    than two powers are in view."""
+    ax = figures()["curves"].axes[0]
+    converge = next(c.lines[0] for c in ax.containers if "converge" in c.get_label())
+    assert list(converge.get_ydata()) == [math.log10(v) for v in (0.3, 0.2, 0.1)]
+    low, high = ax.get_ylim()
+    assert low < math.log10(0.08 * 0.9) and high > math.log10(0.9 * 1.1)
+    majors = {t.get_position()[1]: t.get_text() for t in ax.get_yticklabels()}
+    powers = range(math.ceil(low), math.floor(high) + 1)
+    assert majors == {k: f"$\\mathdefault{{10^{{{k}}}}}$" for k in powers} and len(powers) == 2
+    minors = [t.get_position()[1] for t in ax.get_yticklabels(minor=True)]
+    expected = [k + math.log10(m) for k in range(-2, 1) for m in range(2, 10)]
+    assert minors == [y for y in expected if low <= y <= high]
+    assert not any(t.get_text() for t in ax.get_yticklabels(minor=True))
+    narrow = Series("sdnn", "sdnn (acc, torch)", {0.5: spread(0.04), 1.0: spread(0.03)})
+    ax = sample_efficiency_figure([narrow], "t").axes[0]
+    assert not ax.get_yticklabels()  # no power of ten in view: every minor tick named
+    named = [t.get_text() for t in ax.get_yticklabels(minor=True)]
+    assert named == ["$\\mathdefault{3\\times10^{-2}}$", "$\\mathdefault{4\\times10^{-2}}$"]
+
+
 def svg_of(tmp_path: Path, name: str) -> bytes:
     write_svg(figures()["curves"], tmp_path / name)
     return (tmp_path / name).read_bytes()
@@ -178,6 +201,7 @@ def test_a_runs_plot_is_drawn_with_its_models_colour(tmp_path):
         patch.setattr("symbench.core.board.plots.write_png", lambda fig, p: drawn.append(fig))
         sample_efficiency_png({"sdgnn (jax)": ([0.5, 1.0], [0.2, 0.1], None)}, "run", path)
     (line,) = (c.lines[0] for c in drawn[0].axes[0].containers)
-    assert line.get_color() == colour_of("sdgnn") and list(line.get_ydata()) == [0.2, 0.1]
+    assert line.get_color() == colour_of("sdgnn")
+    assert list(line.get_ydata()) == [math.log10(0.2), -1.0]  # drawn on a log axis
     sample_efficiency_png({"sdgnn (jax)": ([0.5, 1.0], [0.2, 0.1], None)}, "run", path)
     assert path.read_bytes().startswith(b"\x89PNG")

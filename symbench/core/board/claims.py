@@ -29,6 +29,7 @@ import pandas as pd
 
 from symbench.core.board.sizes import default_size
 from symbench.core.board.statistics import Interval, t_interval, welch_interval
+from symbench.core.common import portable_math
 from symbench.core.common.errors import SymbenchError
 from symbench.core.robot.specs import load_robot
 
@@ -101,7 +102,12 @@ def _paired(
     if not common:
         return []
     values = np.array([[s[k] for k in common] for s in present])
-    estimate = t_interval(np.asarray(signs) @ (np.log(values) if ratio else values))
+    # each seed's signed sum row by row, not a matrix product: BLAS kernels, chosen per CPU,
+    # may sum in another order
+    terms = np.asarray(signs, dtype=float)[:, None] * (
+        portable_math.log(values) if ratio else values
+    )
+    estimate = t_interval(terms.sum(axis=0))
     if ratio:
         return [Comparison(dataset, what, _exp(estimate), len(common), 1.0, True)]
     return [Comparison(dataset, what, estimate, len(common), 0.0, True)]
@@ -178,7 +184,8 @@ def _more_legs(board: _Board) -> Iterator[Comparison]:
             if more_errors is None or fewer_errors is None:
                 continue
             estimate = welch_interval(
-                list(np.log(list(more_errors.values()))), list(np.log(list(fewer_errors.values())))
+                list(portable_math.log(list(more_errors.values()))),
+                list(portable_math.log(list(fewer_errors.values()))),
             )
             yield Comparison(
                 f"{more} / {fewer}",

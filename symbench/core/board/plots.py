@@ -4,12 +4,14 @@ Every plot follows the same rules, so that none misleads: a model has one colour
 plot and its several entries (variants, backends, protocols) differ by marker, line or hatch
 (`palette`); each point shows the mean over seeds, its 95 % interval and each seed's value;
 a line never joins two points across an x where it has no data; the legend sits beside the
-axes, never on the data. Figures are built without pyplot (no global state, no display) and
-written by `plot_files`.
+axes, never on the data; a log axis is drawn from `portable_math` logarithms (`_log_axis`), so
+that the files are the same bytes on every CPU. Figures are built without pyplot (no global
+state, no display) and written by `plot_files`.
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -19,6 +21,7 @@ import numpy as np
 
 from symbench.core.board.palette import colour_of, styles_of
 from symbench.core.board.plot_files import write_png
+from symbench.core.common import portable_math
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -26,6 +29,7 @@ if TYPE_CHECKING:
 
 HEIGHT = 3.5  # inches, of every figure
 RMSE_LABEL = "test torque RMSE (N m, log scale)"
+MOST_DECADE_LABELS = 8  # a log axis spanning more labels every few powers of ten
 
 
 @dataclass(frozen=True)
@@ -52,6 +56,45 @@ class Series(Generic[X]):
     model: str
     label: str
     points: Mapping[X, Spread]
+
+
+def _logged_series(series: Sequence[Series[X]]) -> list[Series[X]]:
+    """The series with every value replaced by its base-10 logarithm, to be drawn on an axis
+    that `_log_axis` labels; a value a log axis cannot show (0, negative) becomes NaN."""
+    return [Series(s.model, s.label, {x: _logged(p) for x, p in s.points.items()}) for s in series]
+
+
+def _logged(spread: Spread) -> Spread:
+    return Spread(
+        _log10(spread.mean),
+        _log10(spread.low),
+        _log10(spread.high),
+        tuple(_log10(v) for v in spread.seeds),
+    )
+
+
+def _log10(value: float) -> float:
+    return portable_math.log10(value) if value > 0 else math.nan
+
+
+def _log_axis(ax: Axes) -> None:
+    """Ticks and labels of a log axis on y, whose data are base-10 logarithms drawn linearly
+    (`_logged_series`): a major tick at each power of ten (every few when the view spans
+    many), minor ticks at 2 to 9 times them, some labelled when fewer than two powers are
+    in view (all when under 0.4 of a power). Matplotlib's own log scale computes positions
+    with numpy's log and power, whose last bits differ between CPUs (`portable_math`):
+    enough to move a line by a pixel."""
+    low, high = ax.get_ylim()
+    stride = max(1, math.ceil((high - low) / MOST_DECADE_LABELS))
+    span = range(math.floor(low), math.ceil(high) + 1)
+    decades = [k for k in span if k % stride == 0 and low <= k <= high]
+    minor = [(k, m, k + portable_math.log10(m)) for k in span for m in range(2, 10) if stride == 1]
+    minor = [(k, m, y) for k, m, y in minor if low <= y <= high]
+    ax.set_yticks(decades, [f"$\\mathdefault{{10^{{{k}}}}}$" for k in decades])
+    named = range(2, 10) if high - low < 0.4 else (2, 3, 4, 6) if len(decades) < 2 else ()
+    labels = [f"$\\mathdefault{{{m}\\times10^{{{k}}}}}$" if m in named else "" for k, m, _ in minor]
+    ax.set_yticks([y for _, _, y in minor], labels, minor=True)
+    ax.set_ylim(low, high)
 
 
 # one run's curve (the sample-efficiency evaluator's plot of a single seed): x, values, None
@@ -144,13 +187,13 @@ def _finish(fig: Figure) -> Figure:
 def sample_efficiency_figure(series: Sequence[Series[float]], title: str) -> Figure:
     """Test RMSE against the fraction of training climbs, a line per series."""
     fig, (ax,) = _figure(5.0)
-    draw_curves(ax, series)
+    draw_curves(ax, _logged_series(series))
     ax.set(
         xlabel="fraction of the training climbs (1: all, the iid split)",
         ylabel=RMSE_LABEL,
         title=title,
-        yscale="log",
     )
+    _log_axis(ax)
     return _finish(fig)
 
 
@@ -163,22 +206,22 @@ def asymmetry_figure(
     datasets' own torque asymmetry (relative error between rotated image climbs, one value
     per dataset), both on log scales."""
     fig, (left, right) = _figure(9.0, axes=2)
-    draw_curves(left, series)
+    draw_curves(left, _logged_series(series))
     left.set(
         xlabel="asymmetry A (leg 0 is 1 + A times as heavy)",
         ylabel=RMSE_LABEL,
         title=title,
-        yscale="log",
     )
+    _log_axis(left)
     if data_asymmetry is not None:
         x, asymmetry = data_asymmetry
-        right.plot(x, asymmetry, marker="s", color="grey")
+        right.plot(x, [_log10(a) for a in asymmetry], marker="s", color="grey")
     right.set(
         xlabel="asymmetry A",
         ylabel="the data's torque asymmetry (relative, log scale)",
         title="the data's own symmetry",
-        yscale="log",
     )
+    _log_axis(right)
     return _finish(fig)
 
 

@@ -18,6 +18,8 @@ import numpy as np
 import pandas as pd
 from scipy import stats
 
+from symbench.core.common import portable_math
+
 CONFIDENCE = 0.95  # of every interval
 LEVEL = 0.05  # of the paired test that splits rank bands (two-sided, unadjusted)
 RESAMPLES = 10_000
@@ -92,7 +94,7 @@ def differ(a: Mapping[int, float], b: Mapping[int, float]) -> bool:
     common = sorted(set(a) & set(b))
     if len(common) < 2:
         return False
-    d = np.log([a[s] for s in common]) - np.log([b[s] for s in common])
+    d = portable_math.log([a[s] for s in common]) - portable_math.log([b[s] for s in common])
     spread = np.std(d, ddof=1)
     if spread == 0:
         return bool(d[0] != 0)

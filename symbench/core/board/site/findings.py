@@ -6,6 +6,7 @@ test of the rank bands); then the closed loop's highest and lowest score."""
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 
 import numpy as np
@@ -15,6 +16,7 @@ from symbench.core.board.cells import TIMES, cell_of, metric_cell
 from symbench.core.board.site.columns import RMSE
 from symbench.core.board.statistics import differ, t_interval
 from symbench.core.board.summary import split_order
+from symbench.core.common import portable_math
 
 Label = Callable[[pd.Series], str]  # an aggregate row's model as the table names it
 
@@ -48,9 +50,10 @@ def _compared(part: pd.DataFrame, robot: str, split: str, label: Label) -> str:
     a, b = _pair(part)
     seeds_a, seeds_b = a.per_seed[RMSE], b.per_seed[RMSE]
     common = sorted(set(seeds_a) & set(seeds_b))
-    logs = t_interval([np.log(seeds_a[s] / seeds_b[s]) for s in common]) if common else None
+    ratios = [seeds_a[s] / seeds_b[s] for s in common]
+    logs = t_interval(list(portable_math.log(ratios))) if common else None
     ratio = (
-        metric_cell(np.exp(logs.value), np.exp(logs.low), np.exp(logs.high), 2)
+        metric_cell(math.exp(logs.value), math.exp(logs.low), math.exp(logs.high), 2)
         if logs is not None
         else metric_cell(np.nan, np.nan, np.nan, 2)
     )
