@@ -10,6 +10,7 @@ from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
+from cpu_features import WITHOUT_AVX512
 
 from symbench.core.board.leaderboard import load_records
 from symbench.core.board.publish import publish
@@ -52,11 +53,6 @@ def test_committed_tables_regenerate_identically(board, tmp_path):
     assert sorted(made) == sorted(committed)
     for name, content in made.items():
         assert content == committed[name], f"{board}/{name} is not what the records give"
-
-
-# numpy's float64 log, log10, exp and power run on AVX-512 kernels where the CPU has them;
-# disabled, they run the code every other CPU runs
-WITHOUT_AVX512 = {"NPY_DISABLE_CPU_FEATURES": "X86_V4 AVX512_ICL AVX512_SPR"}
 
 
 @pytest.mark.parametrize("board", [BOARD, BOARD / "studies" / "asymmetry-v7"], ids=["main", "asym"])
