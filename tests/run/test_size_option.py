@@ -8,17 +8,24 @@ from cli_invoke import error_line, invoke
 from symbench.core.runs.results import read_record
 
 
-def test_run_records_the_size_it_was_given(smoke_hexa, tmp_path):
+def test_run_records_the_size_it_was_given_and_its_key_names_it(smoke_hexa, tmp_path):
+    """Before 2026-12-06 the key did not name it: the plain run after it was refused, its
+    record file holding 'another configuration'."""
     out = tmp_path / "ring"
     common = ("--model", "sdnn", "--robot", "hexa", "--preset", "smoke", "--output", out)
     result = invoke("run", *common, "--size", "ring=1", "--evaluators", "torque-error")
     assert result.exit_code == 0, result.output
     (path,) = out.glob("*.json")
     record = read_record(path)
-    assert record.training.config.hyper == {"ring": 1}
+    assert record.training.config.hyper == {"ring": 1} == record.model.sizes
     assert record.model.hyperparameters["ring"] == 1
-    plain = invoke("run", *common, "--evaluators", "torque-error")  # same key, other network
-    assert "another configuration" in error_line(plain, 1)
+    assert path.stem == record.key() and path.stem.endswith("__converge__ring-1__seed0")
+    plain = invoke("run", *common, "--evaluators", "torque-error")  # same folder, own record
+    assert plain.exit_code == 0, plain.output
+    (other,) = set(out.glob("*.json")) - {path}
+    assert other.stem == path.stem.replace("__ring-1", "")
+    assert read_record(other).model.sizes is None
+    assert read_record(other).model.hyperparameters["ring"] == 0
 
 
 def test_sweep_passes_the_size_to_every_run(smoke_hexa, tmp_path):

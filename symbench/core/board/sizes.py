@@ -1,6 +1,7 @@
-"""The board's sizes: a record at the model's default size, or one matched to N parameters
-(`--parameters N`). Sizes are never mixed in one table, as protocols are not: each size has
-its own sections and its own ranks, default sizes first.
+"""The board's sizes: a record at the model's default size, one matched to N parameters
+(`--parameters N`), or one with build keywords set by name (`--size mirror=1`). Sizes are
+never mixed in one table, as protocols are not: each size has its own sections and its own
+ranks, default sizes first, then matched sizes by count, then sizes set by name.
 
 A matched section asks every model to be within BOARD_TOLERANCE of N, tighter than the
 MATCH_TOLERANCE `symbench run` accepts (`training.sizes`): the board states each model's
@@ -9,30 +10,42 @@ relative miss and marks a model outside it, rather than hiding it.
 
 from __future__ import annotations
 
+import re
+
 import pandas as pd
 
 from symbench.core.runs.results import RecordV1
 
 DEFAULT = "default"
 MATCHED = "matched "  # a matched size's label: 'matched 100000'
+SET = "with "  # keywords set by name: 'with mirror=1', 'matched 100000 with latent=64'
 BOARD_TOLERANCE = 0.05
+_MATCHED = re.compile(r"^matched (\d+)")
 
 
 def size_of(record: RecordV1) -> str:
-    """'default', or 'matched N' for a record made with `--parameters N`."""
+    """'default'; 'matched N' for a record made with `--parameters N`; 'with a=1, b=2' for
+    build keywords set by `--size` (after 'matched N ' when both)."""
     matched = getattr(record.model, "matched_parameters", None)
-    return DEFAULT if matched is None else f"{MATCHED}{matched}"
+    sizes = getattr(record.model, "sizes", None) or {}
+    parts = [] if matched is None else [f"{MATCHED}{matched}"]
+    if sizes:
+        parts.append(SET + ", ".join(f"{k}={v}" for k, v in sorted(sizes.items())))
+    return " ".join(parts) or DEFAULT
 
 
 def matched_count(size: str) -> int | None:
-    """N of 'matched N'; None for the default size."""
-    return None if size == DEFAULT else int(size.removeprefix(MATCHED))
+    """N of 'matched N'; None for a size not matched."""
+    found = _MATCHED.match(size)
+    return None if found is None else int(found.group(1))
 
 
-def size_order(size: str) -> tuple[int, int]:
-    """Default sizes first, then matched sizes by increasing count."""
+def size_order(size: str) -> tuple[int, int, str]:
+    """Default sizes first, then matched sizes by increasing count, then keywords set by name."""
     count = matched_count(size)
-    return (0, 0) if count is None else (1, count)
+    if size == DEFAULT:
+        return (0, 0, "")
+    return (1, count, size) if count is not None else (2, 0, size)
 
 
 def by_size(table: pd.DataFrame) -> list[tuple[str, pd.DataFrame]]:
@@ -48,12 +61,14 @@ def default_size(table: pd.DataFrame) -> pd.DataFrame:
 
 def titled(heading: str, size: str) -> str:
     """A section's heading with its size: unchanged at the default size, else followed by
-    ', matched at 100 000 parameters'."""
+    ', matched at 100 000 parameters' and/or ', built with mirror=1'."""
     count = matched_count(size)
-    if count is None:
-        return heading
-    grouped = f"{count:,}".replace(",", " ")
-    return f"{heading}, matched at {grouped} parameters"
+    if count is not None:
+        grouped = f"{count:,}".replace(",", " ")
+        heading = f"{heading}, matched at {grouped} parameters"
+    if SET in size:
+        heading = f"{heading}, built {size[size.index(SET) :]}"
+    return heading
 
 
 def miss(parameters: int, size: str) -> float | None:

@@ -10,7 +10,8 @@ an edited record); `symbench verify` re-runs a record to check its numbers.
 A run's identity is its configuration: the data (dataset id and content hash), the preset
 (budgets), split, seed, model, input variant, backend, evaluators and training configuration.
 The key (`run_key`), which names the record file, holds what tells runs apart at a glance
-(dataset id, preset, split, model, variant, backend, protocol, a matched size, seed);
+(dataset id, preset, split, model, variant, backend, protocol, a matched size, the build
+keywords set by `--size`, seed);
 `RecordBody.configuration` holds all of it, so a sweep can tell a finished run from another
 run's record at the same path.
 
@@ -24,6 +25,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+from collections.abc import Mapping
 from pathlib import Path
 from typing import Annotated, Any, Final, Literal
 
@@ -54,14 +56,17 @@ def run_key(
     protocol: str,
     seed: int,
     parameters: int | None = None,
+    sizes: Mapping[str, int] | None = None,
 ) -> str:
     """What identifies a run by name: one record per key, written as `<key>.json`, e.g.
     `hexa-climb-small-v5__small__iid__sdnn__acc__torch__converge__seed0`. The dataset id names
     the data (a standard id names its robot and grid), the preset the budgets, the protocol
-    how training stops, `__p<N>` a size matched to N parameters (`--parameters`; default
-    sizes add nothing, so their keys stay as they were); all are in the key, so runs on other
-    data, budgets, protocols or sizes never share a record file or a checkpoint folder."""
+    how training stops, `__p<N>` a size matched to N parameters (`--parameters`), `__<name>-<v>`
+    each build keyword set by `--size name=v`, by name (default sizes add nothing, so their
+    keys stay as they were); all are in the key, so runs on other data, budgets, protocols or
+    sizes never share a record file or a checkpoint folder."""
     size = "" if parameters is None else f"__p{parameters}"
+    size += "".join(f"__{name}-{value}" for name, value in sorted((sizes or {}).items()))
     return (
         f"{dataset}__{preset}__{split}__{model}__{variant}__{backend}__{protocol}{size}__seed{seed}"
     )
@@ -121,6 +126,14 @@ class ModelInfo(ModelInfoV1):
         exclude_if=lambda value: value is None,
         description="the parameter count the widths were scaled to (`--parameters`); absent: "
         "the model's default size",
+    )
+    sizes: dict[Identifier, int] | None = Field(
+        default=None,
+        # left out when None, as matched_parameters: records made before the field, whose
+        # `--size` keywords only training.config.hyper names, keep their seals and keys
+        exclude_if=lambda value: value is None,
+        description="the build keywords set by name (`--size`), part of the run key; absent: "
+        "none set (or a record made before the field)",
     )
 
 
@@ -216,6 +229,7 @@ class RecordV1(_Strict):
             self.protocol(),
             self.seed,
             getattr(m, "matched_parameters", None),
+            getattr(m, "sizes", None),
         )
 
     def protocol(self) -> Protocol:

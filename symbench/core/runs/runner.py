@@ -129,6 +129,7 @@ def record_body(
                 "plugin": plugin_info(entry),
                 "version": entry.version,
                 "matched_parameters": spec.parameters,
+                "sizes": dict(spec.sizes) or None,
             }
         ),
         robot=spec.robot,

@@ -88,6 +88,7 @@ class RunSpec:
             self.protocol,
             self.seed,
             self.parameters,
+            dict(self.sizes),
         )
 
     @property

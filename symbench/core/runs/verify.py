@@ -149,6 +149,7 @@ def replay_spec(record: ResultRecord, output: Path, workers: int) -> RunSpec:
         progress=False,
         protocol=record.training.config.protocol,
         parameters=record.model.matched_parameters,  # the key's size; the widths are replayed
+        sizes=tuple(sorted((record.model.sizes or {}).items())),  # the key's keywords
     )
     recorded = {k: v for k, v in record.training.config.model_dump().items() if v is not None}
     flat = {**train_config(run).to_dict(), **recorded, "hyper": dict(record.model.hyperparameters)}

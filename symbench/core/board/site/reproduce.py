@@ -34,13 +34,17 @@ def run_command(record: RecordV1) -> str:
 
 
 def _sizes(record: RecordV1) -> list[str]:
-    """--parameters N of a matched size (so the record's key and size are the same), then
-    --size NAME=VALUE for every build keyword the run set (by --size or --parameters): the
-    same network, whatever today's search for N would pick."""
+    """The size options of the record's run, so that the command's run has the record's key:
+    `--parameters N` of a matched size (the search at the record's commit picks the same
+    widths, which `verify` replays exactly) with the keywords it set by name (`--size`), or
+    at default size `--size NAME=VALUE` for every build keyword it set (a record made before
+    the key named them, whose keywords only its training configuration holds, included)."""
     config = getattr(record.training, "config", None)
     hyper = config.hyper if config is not None else {}
     matched = getattr(record.model, "matched_parameters", None)
-    size = [] if matched is None else ["--parameters", str(matched)]  # the run's key names it
+    if matched is not None:
+        hyper = getattr(record.model, "sizes", None) or {}
+    size = [] if matched is None else ["--parameters", str(matched)]
     return size + [arg for name in sorted(hyper) for arg in ("--size", f"{name}={hyper[name]}")]
 
 
