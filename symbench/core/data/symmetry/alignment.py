@@ -46,7 +46,7 @@ def alignment_flag(raw: Mapping[str, np.ndarray], unknown: Sequence[str]) -> str
 
 def lift_offs(flags: np.ndarray) -> list[tuple[int, int]]:
     """(row, leg) of each lift-off: a row where the leg's flag is 0 after a 1."""
-    x = np.asarray(flags).reshape(len(flags), -1) > 0.5
+    x = _raised(flags)
     rows, legs = np.nonzero(x[:-1] & ~x[1:])
     return sorted((int(r) + 1, int(leg)) for r, leg in zip(rows, legs))
 
@@ -61,14 +61,20 @@ def _overlap(n_a: int, n_b: int, shift: int) -> tuple[slice, slice]:
 def _mismatch(x: np.ndarray, y: np.ndarray) -> float:
     if not len(x):
         return 1.0
-    xx = np.asarray(x).reshape(len(x), -1) > 0.5
-    yy = np.asarray(y).reshape(len(y), -1) > 0.5
-    return float(np.mean(np.any(xx != yy, axis=-1)))
+    return float(np.mean(np.any(_raised(x) != _raised(y), axis=-1)))
+
+
+def _raised(flags: np.ndarray) -> np.ndarray:
+    """Flags (T, ...) as booleans (T, n): above 0.5, or as given when already booleans (the
+    image overlap makes each climb's once: `compare.Climbs`)."""
+    x = np.asarray(flags).reshape(len(flags), -1)
+    return x if x.dtype == np.bool_ else x > 0.5
 
 
 def align(x: np.ndarray | None, y: np.ndarray | None) -> Alignment:
-    """How flag arrays `x` (T, n) and `y` (T', n) of one motion line up (see the module's
-    docstring): the shift from x's rows to y's, or why there is none."""
+    """How flag arrays `x` (T, n) and `y` (T', n) of one motion (values, or booleans: raised)
+    line up (see the module's docstring): the shift from x's rows to y's, or why there is
+    none."""
     if x is None or y is None:
         return Alignment(0, False, "flags unknown: compared row by row")
     lifts_x, lifts_y = lift_offs(x), lift_offs(y)

@@ -38,6 +38,13 @@ error exceeds `NEAR_TOLERANCE`: the whole error, their maximum, is above it too,
 heading's fit and the base are never computed for a pair whose joints already differ. An
 error at or below the near tolerance is computed whole, so every count is what the whole
 comparison gives (on dataset v7 nearly every pair stops after the joint states).
+
+**What is made once.** A paper-preset split compares each held-out climb with some 600
+training climbs under 13 elements; relabelling every joint column of every candidate, and
+converting each column to float64 and each flag to booleans per comparison, took two thirds
+of that time (hexa `paper` `iid`, 2026-12-06). Each climb's joint columns in float64 and its
+alignment flag as booleans are kept (`Climbs.joints`, `Climbs.raised`), an element relabels
+only the columns of the group being compared, and the figures are the same to the last digit.
 """
 
 from __future__ import annotations
@@ -48,10 +55,11 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from symbench.core.common.errors import SymbenchError
-from symbench.core.data.symmetry.alignment import align_pair, aligned_rows, difference
-from symbench.core.data.symmetry.raw_action import act_on_base, act_on_legs
+from symbench.core.data.symmetry.alignment import align, aligned_rows, alignment_flag, difference
+from symbench.core.data.symmetry.raw_action import act_on_base, base_map
 from symbench.core.data.symmetry.report import GROUPS
 from symbench.core.data.views.frames import LegFrames, quat_multiply, quat_to_matrix, yaw_quat
+from symbench.core.data.views.schema import FeatureType
 from symbench.core.symmetry.groups import GroupElement, LegGroup
 
 CLASSES = ("none", "heading", "group", "mirror")
@@ -69,6 +77,7 @@ PREFILTER_SLACK = 2.0
 COMPARED = tuple(c for cols in GROUPS.values() for c in cols)
 WORLD_VECTORS = ("base_pos", "base_linvel", "base_angvel", "base_linacc")
 FLAGS = ("contact", "magnet")
+LEG_GROUPS = ("joint states", "torques")  # GROUPS whose columns are per leg (T, legs, 3)
 
 
 def class_tiers(group: LegGroup, mirrors: LegGroup) -> list[list[tuple[GroupElement, bool]]]:
@@ -101,6 +110,13 @@ def _heading_angle(
     return float(np.arctan2(cross, dot))
 
 
+def _relabel(column: np.ndarray, src: np.ndarray, signs: np.ndarray | None) -> np.ndarray:
+    """A joint column (T, legs, 3) of g . a: leg j from a's leg src[j], times the joint signs
+    of a mirror (as `raw_action.act_on_legs`)."""
+    moved = column[:, src, :]
+    return moved if signs is None else moved * signs
+
+
 def turn_about_gravity(raw: Mapping[str, np.ndarray], angle: float) -> dict[str, np.ndarray]:
     """The world-frame columns of `raw` turned by `angle` (rad) about world z (the compared
     columns only: the others are not needed)."""
@@ -127,6 +143,11 @@ class Climbs:
     summary: dict[int, np.ndarray] = field(init=False)
     _errors: dict[tuple[int, int, int], float] = field(init=False, default_factory=dict)
     _axes: dict[int, np.ndarray] = field(init=False, default_factory=dict)
+    _joints: dict[int, dict[str, np.ndarray]] = field(init=False, default_factory=dict)
+    _raised: dict[tuple[int, str], np.ndarray] = field(init=False, default_factory=dict)
+    _legs: dict[GroupElement, tuple[np.ndarray, np.ndarray | None]] = field(
+        init=False, default_factory=dict
+    )
 
     def __post_init__(self) -> None:
         self.tiers = class_tiers(self.group, self.mirrors)
@@ -173,6 +194,39 @@ class Climbs:
             self._axes[i] = quat_to_matrix(self.raw[i]["base_quat"])
         return self._axes[i]
 
+    def joints(self, i: int) -> dict[str, np.ndarray]:
+        """Climb i's joint columns (`LEG_GROUPS`' columns) in float64, made once."""
+        if i not in self._joints:
+            raw = self.raw[i]
+            self._joints[i] = {
+                c: np.asarray(raw[c], np.float64) for g in LEG_GROUPS for c in GROUPS[g]
+            }
+        return self._joints[i]
+
+    def raised(self, i: int, flag: str) -> np.ndarray:
+        """Climb i's flag `flag` as booleans (above 0.5), made once: what `align` reads."""
+        if (i, flag) not in self._raised:
+            self._raised[i, flag] = np.asarray(self.raw[i][flag]) > 0.5
+        return self._raised[i, flag]
+
+    def legs(self, g: GroupElement) -> tuple[np.ndarray, np.ndarray | None]:
+        """What g does to the per-leg columns: the source leg of each leg, and the joint
+        columns' signs (None for a rotation); g is refused when the robot's legs lack it."""
+        if g not in self._legs:
+            base_map(self.frames, g)
+            signs = np.asarray(FeatureType.JOINT.reflection_signs) if g.reflect else None
+            self._legs[g] = (np.asarray(g.source_legs(), dtype=np.int64), signs)
+        return self._legs[g]
+
+    def _shift(self, a: int, b: int, src: np.ndarray | None) -> int:
+        """The rows b is ahead of g . a (`src`: g's source legs, None for the identity) on
+        their lift-offs, as `alignment.align_pair` gives for the relabelled climb."""
+        flag = alignment_flag(self.raw[b], self.unknown)
+        if flag is None or flag not in self.raw[a]:
+            return align(None, None).shift
+        mine = self.raised(a, flag)
+        return align(mine if src is None else mine[:, src], self.raised(b, flag)).shift
+
     def element_error(
         self, a: int, b: int, g: GroupElement, heading: bool, decided_above: float = np.inf
     ) -> float:
@@ -180,30 +234,37 @@ class Climbs:
         group's error exceeds `decided_above` the rest is not computed and that group's error,
         a lower bound of the whole, is returned (see the module's Early stop)."""
         identity, climb = g == self.group.identity, self.raw[a]
-        # the legs' columns first (the alignment reads their flags); the base when reached
-        moved = climb if identity else {**climb, **act_on_legs(g, climb, self.frames)}
-        shift = align_pair(moved, self.raw[b], self.unknown).shift
+        src, signs = self.legs(g)
+        shift = self._shift(a, b, None if identity else src)
         worst = 0.0
         for name, cols in GROUPS.items():
-            if name == "base":
-                if not identity:
-                    moved = {**moved, **act_on_base(g, climb, self.frames)}
-                if heading:  # only the base's columns turn with the heading
+            if name in LEG_GROUPS:  # g . a's columns of this group alone, relabelled
+                mine = self.joints(a)
+                moved = {c: mine[c] if identity else _relabel(mine[c], src, signs) for c in cols}
+                target: Mapping[str, np.ndarray] = self.joints(b)
+            else:  # the base, the only group the free heading turns
+                moved = climb if identity else {**climb, **act_on_base(g, climb, self.frames)}
+                target = self.raw[b]
+                if heading:
                     axes = self.base_axes(b)
-                    angle = _heading_angle(moved, self.raw[b], axes, shift, self.scales)
+                    angle = _heading_angle(moved, target, axes, shift, self.scales)
                     moved = turn_about_gravity(moved, angle)
-            worst = max(worst, self._group_error(moved, b, cols, shift))
+            worst = max(worst, self._group_error(moved, target, cols, shift))
             if worst > decided_above:
                 break
         return worst
 
     def _group_error(
-        self, moved: Mapping[str, np.ndarray], b: int, columns: Sequence[str], shift: int
+        self,
+        moved: Mapping[str, np.ndarray],
+        target: Mapping[str, np.ndarray],
+        columns: Sequence[str],
+        shift: int,
     ) -> float:
         """The RMS over `columns` of their relative errors (see the module)."""
         rel = []
         for column in columns:
-            diff, _ = difference(moved, self.raw[b], column, shift)
+            diff, _ = difference(moved, target, column, shift)
             scale = self.scales[column]
             rms = float(np.sqrt(np.mean(diff**2))) if diff.size else np.inf
             rel.append(rms / scale if scale > 0 else (0.0 if rms == 0 else np.inf))
