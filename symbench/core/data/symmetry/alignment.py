@@ -13,6 +13,8 @@ from typing import Any
 
 import numpy as np
 
+from symbench.core.common.errors import SymbenchError
+
 ALIGN_TOLERANCE = 0.1  # share of rows whose flags may differ in an aligned pair
 
 
@@ -51,6 +53,50 @@ def lift_offs(flags: np.ndarray) -> list[tuple[int, int]]:
     return sorted((int(r) + 1, int(leg)) for r, leg in zip(rows, legs))
 
 
+def _raised(flags: np.ndarray) -> np.ndarray:
+    """Flags (T, ...) as booleans (T, n): above 0.5."""
+    return np.asarray(flags).reshape(len(flags), -1) > 0.5
+
+
+@dataclass(frozen=True)
+class Flags:
+    """A log's flags as `align` reads them, made once (`of`): raised or not per row and leg,
+    each row's raised flags as one integer (two rows agree when their codes do) and the
+    lift-offs. The image overlap aligns each climb with hundreds of others under every
+    group element (`compare.Climbs`): made per comparison, these cost half its time."""
+
+    raised: np.ndarray  # (T, n) booleans
+    codes: np.ndarray  # (T,) int64
+    lifts: tuple[tuple[int, int], ...]  # (row, leg) of each lift-off, sorted
+
+    @classmethod
+    def of(cls, flags: np.ndarray) -> Flags:
+        raised = _raised(flags)
+        if raised.shape[1] > MOST_FLAGS:
+            raise SymbenchError(
+                f"a log with {raised.shape[1]} flags per row cannot be aligned (at most "
+                f"{MOST_FLAGS})"
+            )
+        return cls(raised, _codes(raised), tuple(lift_offs(raised)))
+
+    def relabelled(self, source: np.ndarray) -> Flags:
+        """The flags with column j taken from column source[j] (a permutation of legs)."""
+        raised = self.raised[:, source]
+        new_leg = np.argsort(source)
+        lifts = sorted((row, int(new_leg[leg])) for row, leg in self.lifts)
+        return Flags(raised, _codes(raised), tuple(lifts))
+
+    def __len__(self) -> int:
+        return len(self.codes)
+
+
+MOST_FLAGS = 62  # flags per row that one int64 code holds
+
+
+def _codes(raised: np.ndarray) -> np.ndarray:
+    return raised @ (np.int64(1) << np.arange(raised.shape[1], dtype=np.int64))
+
+
 def _overlap(n_a: int, n_b: int, shift: int) -> tuple[slice, slice]:
     """The rows of a and of b that line up when row i of a is row i + shift of b."""
     start_a = max(0, -shift)
@@ -58,48 +104,44 @@ def _overlap(n_a: int, n_b: int, shift: int) -> tuple[slice, slice]:
     return slice(start_a, start_a + rows), slice(start_a + shift, start_a + shift + rows)
 
 
-def _mismatch(x: np.ndarray, y: np.ndarray) -> float:
-    if not len(x):
+def _mismatch(x: Flags, y: Flags, shift: int) -> float:
+    """The share of the rows lined up at `shift` whose flags differ (1 when none line up)."""
+    sx, sy = _overlap(len(x), len(y), shift)
+    rows = sx.stop - sx.start
+    if not rows:
         return 1.0
-    return float(np.mean(np.any(_raised(x) != _raised(y), axis=-1)))
+    return np.count_nonzero(x.codes[sx] != y.codes[sy]) / rows
 
 
-def _raised(flags: np.ndarray) -> np.ndarray:
-    """Flags (T, ...) as booleans (T, n): above 0.5, or as given when already booleans (the
-    image overlap makes each climb's once: `compare.Climbs`)."""
-    x = np.asarray(flags).reshape(len(flags), -1)
-    return x if x.dtype == np.bool_ else x > 0.5
-
-
-def align(x: np.ndarray | None, y: np.ndarray | None) -> Alignment:
-    """How flag arrays `x` (T, n) and `y` (T', n) of one motion (values, or booleans: raised)
-    line up (see the module's docstring): the shift from x's rows to y's, or why there is
-    none."""
+def align(x: np.ndarray | Flags | None, y: np.ndarray | Flags | None) -> Alignment:
+    """How flag arrays `x` (T, n) and `y` (T', n) of one motion (or their `Flags`) line up
+    (see the module's docstring): the shift from x's rows to y's, or why there is none."""
     if x is None or y is None:
         return Alignment(0, False, "flags unknown: compared row by row")
-    lifts_x, lifts_y = lift_offs(x), lift_offs(y)
-    if not lifts_x and not lifts_y:
-        return Alignment(0, True, "in phase (no lift-off)", _mismatch(*aligned_rows(x, y, 0)))
+    fx = x if isinstance(x, Flags) else Flags.of(x)
+    fy = y if isinstance(y, Flags) else Flags.of(y)
+    if not fx.lifts and not fy.lifts:
+        return Alignment(0, True, "in phase (no lift-off)", _mismatch(fx, fy, 0))
     first_x: dict[int, int] = {}
     first_y: dict[int, int] = {}
-    for row, leg in lifts_x:
+    for row, leg in fx.lifts:
         first_x.setdefault(leg, row)
-    for row, leg in lifts_y:
+    for row, leg in fy.lifts:
         first_y.setdefault(leg, row)
     shifts = {0}
-    shifts |= {row - first_x[leg] for row, leg in lifts_y if leg in first_x}
-    shifts |= {first_y[leg] - row for row, leg in lifts_x if leg in first_y}
-    least = min(len(x), len(y)) / 2
+    shifts |= {row - first_x[leg] for row, leg in fy.lifts if leg in first_x}
+    shifts |= {first_y[leg] - row for row, leg in fx.lifts if leg in first_y}
+    least = min(len(fx), len(fy)) / 2
     best: tuple[float, int] | None = None
     for shift in sorted(shifts, key=lambda s: (abs(s), s)):
-        sx, sy = _overlap(len(x), len(y), shift)
+        sx, _ = _overlap(len(fx), len(fy), shift)
         if sx.stop - sx.start < least:
             continue
-        mismatch = _mismatch(x[sx], y[sy])
+        mismatch = _mismatch(fx, fy, shift)
         if best is None or mismatch < best[0]:
             best = (mismatch, shift)
     if best is None or best[0] > ALIGN_TOLERANCE:
-        share = _mismatch(*aligned_rows(x, y, 0))
+        share = _mismatch(fx, fy, 0)
         return Alignment(
             0, False, "flags disagree at every shift tried: compared row by row", share
         )

@@ -41,10 +41,11 @@ comparison gives (on dataset v7 nearly every pair stops after the joint states).
 
 **What is made once.** A paper-preset split compares each held-out climb with some 600
 training climbs under 13 elements; relabelling every joint column of every candidate, and
-converting each column to float64 and each flag to booleans per comparison, took two thirds
-of that time (hexa `paper` `iid`, 2026-12-06). Each climb's joint columns in float64 and its
-alignment flag as booleans are kept (`Climbs.joints`, `Climbs.raised`), an element relabels
-only the columns of the group being compared, and the figures are the same to the last digit.
+converting each column to float64 and reading each flag's lift-offs per comparison, took
+two thirds of that time (hexa `paper` `iid`, 2026-12-06). Each climb's joint columns in
+float64 and its alignment flags (`alignment.Flags`, also under each element) are kept
+(`Climbs.joints`, `Climbs.flags`), an element relabels only the columns of the group being
+compared, and the figures are the same to the last digit.
 """
 
 from __future__ import annotations
@@ -55,7 +56,13 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from symbench.core.common.errors import SymbenchError
-from symbench.core.data.symmetry.alignment import align, aligned_rows, alignment_flag, difference
+from symbench.core.data.symmetry.alignment import (
+    Flags,
+    align,
+    aligned_rows,
+    alignment_flag,
+    difference,
+)
 from symbench.core.data.symmetry.raw_action import act_on_base, base_map
 from symbench.core.data.symmetry.report import GROUPS
 from symbench.core.data.views.frames import LegFrames, quat_multiply, quat_to_matrix, yaw_quat
@@ -144,7 +151,10 @@ class Climbs:
     _errors: dict[tuple[int, int, int], float] = field(init=False, default_factory=dict)
     _axes: dict[int, np.ndarray] = field(init=False, default_factory=dict)
     _joints: dict[int, dict[str, np.ndarray]] = field(init=False, default_factory=dict)
-    _raised: dict[tuple[int, str], np.ndarray] = field(init=False, default_factory=dict)
+    _flag_names: dict[int, str | None] = field(init=False, default_factory=dict)
+    _flags: dict[tuple[int, str, GroupElement | None], Flags] = field(
+        init=False, default_factory=dict
+    )
     _legs: dict[GroupElement, tuple[np.ndarray, np.ndarray | None]] = field(
         init=False, default_factory=dict
     )
@@ -203,11 +213,16 @@ class Climbs:
             }
         return self._joints[i]
 
-    def raised(self, i: int, flag: str) -> np.ndarray:
-        """Climb i's flag `flag` as booleans (above 0.5), made once: what `align` reads."""
-        if (i, flag) not in self._raised:
-            self._raised[i, flag] = np.asarray(self.raw[i][flag]) > 0.5
-        return self._raised[i, flag]
+    def flags(self, i: int, flag: str, g: GroupElement | None = None) -> Flags:
+        """Climb i's flag `flag` as `align` reads it, relabelled by g (None: as recorded),
+        made once: each training climb is aligned with every held-out one under every g."""
+        key = (i, flag, g)
+        if key not in self._flags:
+            if g is None:
+                self._flags[key] = Flags.of(self.raw[i][flag])
+            else:
+                self._flags[key] = self.flags(i, flag).relabelled(self.legs(g)[0])
+        return self._flags[key]
 
     def legs(self, g: GroupElement) -> tuple[np.ndarray, np.ndarray | None]:
         """What g does to the per-leg columns: the source leg of each leg, and the joint
@@ -218,14 +233,15 @@ class Climbs:
             self._legs[g] = (np.asarray(g.source_legs(), dtype=np.int64), signs)
         return self._legs[g]
 
-    def _shift(self, a: int, b: int, src: np.ndarray | None) -> int:
-        """The rows b is ahead of g . a (`src`: g's source legs, None for the identity) on
-        their lift-offs, as `alignment.align_pair` gives for the relabelled climb."""
-        flag = alignment_flag(self.raw[b], self.unknown)
+    def _shift(self, a: int, b: int, g: GroupElement | None) -> int:
+        """The rows b is ahead of g . a (g None: the identity) on their lift-offs, as
+        `alignment.align_pair` gives for the relabelled climb."""
+        if b not in self._flag_names:
+            self._flag_names[b] = alignment_flag(self.raw[b], self.unknown)
+        flag = self._flag_names[b]
         if flag is None or flag not in self.raw[a]:
             return align(None, None).shift
-        mine = self.raised(a, flag)
-        return align(mine if src is None else mine[:, src], self.raised(b, flag)).shift
+        return align(self.flags(a, flag, g), self.flags(b, flag)).shift
 
     def element_error(
         self, a: int, b: int, g: GroupElement, heading: bool, decided_above: float = np.inf
@@ -235,7 +251,7 @@ class Climbs:
         a lower bound of the whole, is returned (see the module's Early stop)."""
         identity, climb = g == self.group.identity, self.raw[a]
         src, signs = self.legs(g)
-        shift = self._shift(a, b, None if identity else src)
+        shift = self._shift(a, b, None if identity else g)
         worst = 0.0
         for name, cols in GROUPS.items():
             if name in LEG_GROUPS:  # g . a's columns of this group alone, relabelled
