@@ -6,7 +6,8 @@
 # copied into the worktree first. A run that
 # failed beside another (out of memory) runs again alone before the next phase starts.
 #
-#   leaderboards/sweeps/board-v7.sh [WORKTREE]        (default: ../wt-board7m beside the repo)
+#   leaderboards/sweeps/board-v7.sh [WORKTREE [PAPER_WORKTREE]]
+#       (defaults: ../wt-board7m and ../wt-paper7 beside the repo)
 set -uo pipefail
 
 REPO=$(cd "$(dirname "$0")/../.." && pwd)
@@ -15,6 +16,12 @@ REPO=$(cd "$(dirname "$0")/../.." && pwd)
 # once per split and seed; records made before name 7a8d9fb
 COMMIT=2dd8a0d
 WT=${1:-$(dirname "$REPO")/wt-board7m}
+# the paper board from 5dd2529 (2026-12-06): the same runs as 2dd8a0d's (no training or
+# evaluation figure changed between them), with the image overlap 2.4 times faster, which
+# on the paper data cost about as much as the trainings (about 4 CPU seconds per held-out
+# climb)
+PAPER_COMMIT=5dd2529
+PWT=${2:-$(dirname "$REPO")/wt-paper7}
 PY=${PYTHON:-$REPO/.venv/bin/python}
 MODELS=sdnn,sdgnn,ffnn,ffnn-leg,gnn
 ALL=torque-error,equivariance,invariance,generalization,closed-loop,image-overlap,generalization-gap
@@ -22,15 +29,23 @@ OPEN=torque-error,equivariance,invariance,generalization,image-overlap,generaliz
 FRACTIONS=fraction-0.1,fraction-0.25,fraction-0.5,fraction-0.75
 
 [ -x "$PY" ] || make -C "$REPO" .venv/.installed  # a fresh machine: the environment first
-[ -d "$WT" ] || git -C "$REPO" worktree add --detach "$WT" "$COMMIT"
-[ "$(git -C "$WT" rev-parse --short=7 HEAD)" = "$COMMIT" ] || { echo "$WT is not at $COMMIT" >&2; exit 1; }
-[ -z "$(git -C "$WT" status --porcelain --untracked-files=no)" ] || { echo "$WT is not clean" >&2; exit 1; }
+worktree() {  # worktree FOLDER COMMIT: FOLDER checked out at COMMIT, clean, or exit
+    [ -d "$1" ] || git -C "$REPO" worktree add --detach "$1" "$2"
+    [ "$(git -C "$1" rev-parse --short=7 HEAD)" = "$2" ] || { echo "$1 is not at $2" >&2; exit 1; }
+    [ -z "$(git -C "$1" status --porcelain --untracked-files=no)" ] || { echo "$1 is not clean" >&2; exit 1; }
+}
+worktree "$WT" "$COMMIT"
+worktree "$PWT" "$PAPER_COMMIT"
 # published records back into the output folders whose sweeps made them, so that a fresh
 # worktree skips them
+home() {  # home OUTPUT: the worktree whose sweeps write OUTPUT
+    if [ "$1" = results-paper ]; then echo "$PWT"; else echo "$WT"; fi
+}
 restore() {  # restore OUTPUT RECORDS...
-    local out=$1; shift
-    mkdir -p "$WT/$out"
-    for record in "$@"; do [ -e "$record" ] && cp -n "$record" "$WT/$out/"; done
+    local out=$1 to; shift
+    to=$(home "$out")
+    mkdir -p "$to/$out"
+    for record in "$@"; do [ -e "$record" ] && cp -n "$record" "$to/$out/"; done
     return 0
 }
 restore results "$REPO"/leaderboards/records/*-v7__*.json
@@ -44,13 +59,14 @@ restore results-transfer "$STUDIES"/transfer-v7/records/*.json
 restore results-mirror "$STUDIES"/mirror-group-v7/records/*.json
 for kept in "$REPO"/leaderboards/pending/*/; do
     [ -d "$kept" ] || continue
-    mkdir -p "$WT/$(basename "$kept")"
-    cp -n "$kept"*.json "$WT/$(basename "$kept")/"
+    mkdir -p "$(home "$(basename "$kept")")/$(basename "$kept")"
+    cp -n "$kept"*.json "$(home "$(basename "$kept")")/$(basename "$kept")/"
 done
 
-one_sweep() {  # one_sweep OUTPUT ARGS...: a one-worker sweep into OUTPUT
-    local out=$1; shift
-    (cd "$WT" && MUJOCO_GL=disable PYTHONPATH="$WT" "$PY" -m symbench sweep "$@" \
+one_sweep() {  # one_sweep OUTPUT ARGS...: a one-worker sweep into OUTPUT, in its worktree
+    local out=$1 at; shift
+    at=$(home "$out")
+    (cd "$at" && MUJOCO_GL=disable PYTHONPATH="$at" "$PY" -m symbench sweep "$@" \
         --output "$out" --workers 1)
 }
 
@@ -86,7 +102,7 @@ recorded() {
     [ -n "$robots" ] || return 1
     for robot in ${robots//,/ }; do
         for seed in ${seeds//,/ }; do
-            compgen -G "$WT/$out/$robot-climb-$preset-v7__${preset}__${split}__${model}__*__${backend}__$protocol${size}__seed$seed.json" \
+            compgen -G "$(home "$out")/$out/$robot-climb-$preset-v7__${preset}__${split}__${model}__*__${backend}__$protocol${size}__seed$seed.json" \
                 > /dev/null || return 1
         done
     done

@@ -1,16 +1,17 @@
 #!/usr/bin/env bash
-# Before a working session ends: copies the records of WORKTREE's output folders that are not
+# Before a working session ends: copies the records of the worktrees' output folders that are not
 # published into leaderboards/pending/<output folder>/ (to be committed), and drops from there
 # those published since; board-v7.sh copies them back. Published means the same bytes in the
 # board's records/ or a study's: a study's run may share its file name with a board record
 # (sdnn with --size mirror=1, or a board run made again with another evaluator) and still be
 # a different record.
 #
-#   leaderboards/sweeps/keep-pending.sh [WORKTREE]    (default: ../wt-board7m beside the repo)
+#   leaderboards/sweeps/keep-pending.sh [WORKTREE...]
+#       (default: ../wt-board7m and ../wt-paper7 beside the repo, board-v7.sh's)
 set -euo pipefail
 
 REPO=$(cd "$(dirname "$0")/../.." && pwd)
-WT=${1:-$(dirname "$REPO")/wt-board7m}
+if [ $# -eq 0 ]; then set -- "$(dirname "$REPO")/wt-board7m" "$(dirname "$REPO")/wt-paper7"; fi
 PENDING=$REPO/leaderboards/pending
 
 published() {  # published RECORD: whether a board or a study holds RECORD's very bytes
@@ -22,12 +23,14 @@ published() {  # published RECORD: whether a board or a study holds RECORD's ver
     return 1
 }
 
-for out in "$WT"/results*/; do
-    for record in "$out"*.json; do
-        [ -e "$record" ] || continue
-        published "$record" && continue
-        mkdir -p "$PENDING/$(basename "$out")"
-        cp "$record" "$PENDING/$(basename "$out")/"
+for worktree in "$@"; do
+    for out in "$worktree"/results*/; do
+        for record in "$out"*.json; do
+            [ -e "$record" ] || continue
+            published "$record" && continue
+            mkdir -p "$PENDING/$(basename "$out")"
+            cp "$record" "$PENDING/$(basename "$out")/"
+        done
     done
 done
 for kept in "$PENDING"/*/*.json; do
