@@ -61,6 +61,11 @@ for kept in "$REPO"/leaderboards/pending/*/; do
     [ -d "$kept" ] || continue
     mkdir -p "$(home "$(basename "$kept")")/$(basename "$kept")"
     cp -n "$kept"*.json "$(home "$(basename "$kept")")/$(basename "$kept")/"
+    if [ -d "${kept}image-overlap-cache" ]; then  # the split overlaps measured, by content hash
+        mkdir -p "$(home "$(basename "$kept")")/$(basename "$kept")/image-overlap-cache"
+        cp -n "${kept}"image-overlap-cache/*.json \
+            "$(home "$(basename "$kept")")/$(basename "$kept")/image-overlap-cache/"
+    fi
 done
 
 one_sweep() {  # one_sweep OUTPUT ARGS...: a one-worker sweep into OUTPUT, in its worktree

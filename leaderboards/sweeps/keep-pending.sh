@@ -4,7 +4,10 @@
 # those published since; board-v7.sh copies them back. Published means the same bytes in the
 # board's records/ or a study's: a study's run may share its file name with a board record
 # (sdnn with --size mirror=1, or a board run made again with another evaluator) and still be
-# a different record.
+# a different record. The split overlaps the output folders measured
+# (image-overlap-cache/: small JSON files, keyed by the dataset's content hash, that cost about
+# 25 CPU minutes a split and seed on hexa's paper data) are kept with them, in
+# pending/<output folder>/image-overlap-cache/, until no record of that folder is pending.
 #
 #   leaderboards/sweeps/keep-pending.sh [WORKTREE...]
 #       (default: ../wt-board7m and ../wt-paper7 beside the repo, board-v7.sh's)
@@ -31,9 +34,18 @@ for worktree in "$@"; do
             mkdir -p "$PENDING/$(basename "$out")"
             cp "$record" "$PENDING/$(basename "$out")/"
         done
+        if compgen -G "$PENDING/$(basename "$out")/*.json" > /dev/null \
+            && compgen -G "$out/image-overlap-cache/*.json" > /dev/null; then
+            mkdir -p "$PENDING/$(basename "$out")/image-overlap-cache"
+            cp "$out"image-overlap-cache/*.json "$PENDING/$(basename "$out")/image-overlap-cache/"
+        fi
     done
 done
 for kept in "$PENDING"/*/*.json; do
     [ -e "$kept" ] || continue
     if published "$kept"; then rm "$kept"; fi
+done
+for cache in "$PENDING"/*/image-overlap-cache/; do  # its folder's records all published
+    [ -d "$cache" ] || continue
+    compgen -G "$(dirname "$cache")/*.json" > /dev/null || rm -r "$cache"
 done
