@@ -76,7 +76,8 @@ one_sweep() {  # one_sweep OUTPUT ARGS...: a one-worker sweep into OUTPUT, in it
 }
 
 FAILED=$(mktemp)  # the one-run sweeps that failed beside another, a line each: OUTPUT ARGS...
-trap 'rm -f "$FAILED" "$FAILED.retry"' EXIT
+QUEUE=$(mktemp)  # the paper board's models and seeds still to run, a line each: MODEL SEED
+trap 'rm -f "$FAILED" "$FAILED.retry" "$QUEUE" "$QUEUE.lock"' EXIT
 
 once() {  # once OUTPUT ARGS...: a one-worker sweep, noted in $FAILED when it fails
     one_sweep "$@" || echo "$*" >> "$FAILED"
@@ -150,8 +151,12 @@ sweep() {
         done
     done
     wait  # the next phase may read this one's records
-    # a run that failed beside another (out of memory: hexa's paper runs peak near 10 GB)
-    # runs again alone; one that fails alone too waits for the next session
+    alone_again
+}
+
+# alone_again: a run that failed beside another (out of memory: hexa's paper runs peak near
+# 10 GB) runs again alone; one that fails alone too waits for the next session
+alone_again() {
     local job
     mv "$FAILED" "$FAILED.retry" && : > "$FAILED"
     while read -r -a job; do
@@ -195,8 +200,42 @@ sweep results-mirror --models sdnn --size mirror=1 --robots nona,magneto --split
     --evaluators torque-error,equivariance,invariance
 sweep results-mirror --models sdnn --size mirror=1 --robots hexa --preset transfer --splits unseen-gait \
     --evaluators torque-error,equivariance
-# 7. the paper board (hexa): 50 000 cosine steps, 3 seeds
-sweep results-paper --models $MODELS --seeds 0,1,2 --robots hexa --preset paper --protocol cosine \
-    --max-steps 50000 --splits iid,unseen-rotation --evaluators $ALL
-sweep results-paper --models $MODELS --seeds 0,1,2 --robots hexa --preset paper --protocol cosine \
-    --max-steps 50000 --splits control-rotation,fraction-0.1 --evaluators $OPEN
+# 7. the paper board (hexa): 50 000 cosine steps, 3 seeds, model by model and seed by seed, each
+# one's four runs in turn: they share seven trainings (the iid, unseen-heading,
+# unseen-rotation, control-rotation and fraction-0.1 models and the closed loop's two `next`
+# models), which a new machine trains again for every run still to make (a model and seed
+# whose four runs fell in four sessions: 18 trainings). WORKERS lanes take models and seeds
+# from one queue, those this machine holds trainings of first, so two runs at once never wait
+# for each other's trainings.
+PAPER=(--robots hexa --preset paper --protocol cosine --max-steps 50000)
+paper_runs() {  # paper_runs MODEL SEED: its iid, unseen-rotation, control and fraction runs
+    local split evaluators
+    for split in iid unseen-rotation control-rotation fraction-0.1; do
+        recorded results-paper "$split" "$1" "$2" "${PAPER[@]}" && continue
+        evaluators=$ALL  # the closed loop on iid and unseen-rotation
+        [ "$split" = iid ] || [ "$split" = unseen-rotation ] || evaluators=$OPEN
+        once results-paper --models "$1" --splits "$split" --seeds "$2" "${PAPER[@]}" \
+            --evaluators "$evaluators"
+    done
+}
+next_in_queue() {  # the queue's first line, taken from it
+    flock "$QUEUE.lock" bash -c 'head -n 1 "$1" && sed -i 1d "$1"' _ "$QUEUE"
+}
+lane() {
+    local pair
+    while pair=$(next_in_queue) && [ -n "$pair" ]; do
+        # shellcheck disable=SC2086  # MODEL SEED
+        paper_runs $pair
+    done
+}
+for model in ${MODELS//,/ }; do
+    for seed in 0 1 2; do
+        trained=1
+        compgen -G "$PWT/results-paper/checkpoints/*__${model}__*__seed$seed" > /dev/null && trained=0
+        echo "$trained $model $seed"
+    done
+done | sort -s -k 1,1 | cut -d ' ' -f 2- > "$QUEUE"
+datasets "${PAPER[@]}"
+for _ in $(seq "${WORKERS:-2}"); do lane & done
+wait
+alone_again
