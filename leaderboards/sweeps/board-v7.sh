@@ -58,7 +58,7 @@ restore results-library "$STUDIES"/library-baseline-v7/records/*.json
 restore results-transfer "$STUDIES"/transfer-v7/records/*.json
 restore results-mirror "$STUDIES"/mirror-group-v7/records/*.json
 for kept in "$REPO"/leaderboards/pending/*/; do
-    [ -d "$kept" ] || continue
+    compgen -G "$kept*.json" > /dev/null || continue  # a folder of records (not clip-sources/)
     mkdir -p "$(home "$(basename "$kept")")/$(basename "$kept")"
     cp -n "$kept"*.json "$(home "$(basename "$kept")")/$(basename "$kept")/"
     if [ -d "${kept}image-overlap-cache" ]; then  # the split overlaps measured, by content hash
