@@ -38,8 +38,8 @@ worktree "$WT" "$COMMIT"
 worktree "$PWT" "$PAPER_COMMIT"
 # published records back into the output folders whose sweeps made them, so that a fresh
 # worktree skips them
-home() {  # home OUTPUT: the worktree whose sweeps write OUTPUT
-    if [ "$1" = results-paper ]; then echo "$PWT"; else echo "$WT"; fi
+home() {  # home OUTPUT[/SUBFOLDER]: the worktree whose sweeps write OUTPUT
+    case $1 in results-paper | results-paper/*) echo "$PWT" ;; *) echo "$WT" ;; esac
 }
 restore() {  # restore OUTPUT RECORDS...
     local out=$1 to; shift
@@ -59,13 +59,9 @@ restore results-transfer "$STUDIES"/transfer-v7/records/*.json
 restore results-mirror "$STUDIES"/mirror-group-v7/records/*.json
 for kept in "$REPO"/leaderboards/pending/*/; do
     compgen -G "$kept*.json" > /dev/null || continue  # a folder of records (not clip-sources/)
-    mkdir -p "$(home "$(basename "$kept")")/$(basename "$kept")"
-    cp -n "$kept"*.json "$(home "$(basename "$kept")")/$(basename "$kept")/"
-    if [ -d "${kept}image-overlap-cache" ]; then  # the split overlaps measured, by content hash
-        mkdir -p "$(home "$(basename "$kept")")/$(basename "$kept")/image-overlap-cache"
-        cp -n "${kept}"image-overlap-cache/*.json \
-            "$(home "$(basename "$kept")")/$(basename "$kept")/image-overlap-cache/"
-    fi
+    restore "$(basename "$kept")" "$kept"*.json
+    # the split overlaps its runs measured, by the dataset's content hash
+    restore "$(basename "$kept")/image-overlap-cache" "$kept"image-overlap-cache/*.json
 done
 
 one_sweep() {  # one_sweep OUTPUT ARGS...: a one-worker sweep into OUTPUT, in its worktree
