@@ -63,6 +63,14 @@ for kept in "$REPO"/leaderboards/pending/*/; do
     # the split overlaps its runs measured, by the dataset's content hash
     restore "$(basename "$kept")/image-overlap-cache" "$kept"image-overlap-cache/*.json
 done
+# trainings of unfinished paper runs a machine of this one's kernel class left
+# (keep-trainings.sh): the bits this machine would train, so they are not trained again
+for kept in "$REPO/leaderboards/pending/trainings/$("$PY" "$REPO/leaderboards/sweeps/kernel-class.py")"/*/; do
+    [ -d "${kept}checkpoints" ] || continue
+    out=$(basename "$kept")
+    mkdir -p "$(home "$out")/$out"
+    cp -rn "${kept}checkpoints" "$(home "$out")/$out/"
+done
 
 one_sweep() {  # one_sweep OUTPUT ARGS...: a one-worker sweep into OUTPUT, in its worktree
     local out=$1 at; shift

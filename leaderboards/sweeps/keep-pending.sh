@@ -7,7 +7,8 @@
 # a different record. The split overlaps the output folders measured
 # (image-overlap-cache/: small JSON files, keyed by the dataset's content hash, that cost about
 # 25 CPU minutes a split and seed on hexa's paper data) are kept with them, in
-# pending/<output folder>/image-overlap-cache/, until no record of that folder is pending.
+# pending/<output folder>/image-overlap-cache/, until no record of that folder is pending; so
+# are the trainings keep-trainings.sh kept (pending/trainings/<kernel class>/<output folder>/).
 #
 #   leaderboards/sweeps/keep-pending.sh [WORKTREE...]
 #       (default: ../wt-board7m and ../wt-paper7 beside the repo, board-v7.sh's)
@@ -49,3 +50,8 @@ for cache in "$PENDING"/*/image-overlap-cache/; do  # its folder's records all p
     [ -d "$cache" ] || continue
     compgen -G "$(dirname "$cache")/*.json" > /dev/null || rm -r "$cache"
 done
+for kept in "$PENDING"/trainings/*/*/; do  # keep-trainings.sh's, likewise
+    [ -d "$kept" ] || continue
+    compgen -G "$PENDING/$(basename "$kept")/*.json" > /dev/null || rm -r "$kept"
+done
+find "$PENDING/trainings" -mindepth 1 -type d -empty -delete 2>/dev/null || true

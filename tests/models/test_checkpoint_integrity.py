@@ -136,3 +136,23 @@ def test_run_retrains_from_scratch_when_no_resume_checkpoint_is_good(data, whole
     ]
     assert_same_model(model, whole)
     assert checkpoint_sha256(tmp_path / BEST_DIR / TENSORS) == whole.sha256()
+
+
+@pytest.mark.parametrize("config", [FIRST, WHOLE], ids=["unfinished", "finished"])
+def test_resume_checkpoint_alone_carries_a_training(data, whole, config, tmp_path):
+    """What leaderboards/sweeps/keep-trainings.sh carries to the next machine: a training's
+    resume checkpoint without best/ or the previous one resumes to the uninterrupted result,
+    and a finished one is loaded as it is."""
+    train(registry.model("sdnn", "torch"), *data, config, tmp_path)
+    carried = (tmp_path / RESUME).stat().st_mtime_ns
+    (tmp_path / PREVIOUS).unlink()
+    for part in (tmp_path / BEST_DIR).iterdir():
+        part.unlink()
+    (tmp_path / BEST_DIR).rmdir()
+    model, warned = resumed(data, tmp_path)
+    best = tmp_path / BEST_DIR / TENSORS
+    assert warned == [f"checkpoint {best} does not exist; rewriting it from the resume checkpoint"]
+    assert_same_model(model, whole)
+    assert checkpoint_sha256(best) == whole.sha256()
+    if config is WHOLE:
+        assert (tmp_path / RESUME).stat().st_mtime_ns == carried  # loaded, not trained again
