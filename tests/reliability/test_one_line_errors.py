@@ -331,3 +331,17 @@ def test_an_unexpected_error_is_one_line_and_debug_shows_its_traceback():
             invoke("--debug", "crash")
     finally:
         set_host(None)
+
+
+@pytest.mark.parametrize("value", ["", "two", "0", "-1", "1.5"])
+def test_torch_threads_that_are_no_thread_count_are_named(value, monkeypatch):
+    from symbench.core.training.backends.torch_backend import _torch_threads
+
+    monkeypatch.setenv("SYMBENCH_TORCH_THREADS", value)
+    with pytest.raises(SymbenchError) as error:
+        _torch_threads()
+    assert str(error.value) == (
+        f"SYMBENCH_TORCH_THREADS must be a positive whole number, not {value!r}"
+    )
+    monkeypatch.setenv("SYMBENCH_TORCH_THREADS", "2")
+    assert _torch_threads() == 2

@@ -29,7 +29,18 @@ from symbench.core.training.backends.checks import build_error, check_output, ch
 from symbench.core.training.backends.torch_adam import FusedAdam
 from symbench.core.training.normalization import TARGET_KEY, Normalizer
 
-torch.set_num_threads(int(os.environ.get("SYMBENCH_TORCH_THREADS", "1")))
+
+def _torch_threads() -> int:
+    """SYMBENCH_TORCH_THREADS, checked: a positive whole number (default 1)."""
+    value = os.environ.get("SYMBENCH_TORCH_THREADS", "1")
+    if not value.strip().isdigit() or int(value) < 1:
+        raise SymbenchError(
+            f"SYMBENCH_TORCH_THREADS must be a positive whole number, not {value!r}"
+        )
+    return int(value)
+
+
+torch.set_num_threads(_torch_threads())
 
 Params = dict[str, np.ndarray]
 EVAL_CHUNK = 8192
