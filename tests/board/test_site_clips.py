@@ -145,6 +145,48 @@ def test_a_kept_clip_of_another_network_is_not_shown(tmp_path, make_record, monk
     assert (site / "clips" / f"hexa__{HEXA}-best-sdnn.webp").read_bytes() == b"webp of sdnn"
 
 
+def test_a_page_built_without_clips_says_so_and_the_others_keep_theirs(
+    tmp_path, make_record, monkeypatch
+):
+    """`--without-clips DATASET`: that page needs no checkpoint and says why it has no clip;
+    another dataset's page still shows its clips (here kept from the earlier build)."""
+    monkeypatch.setenv("MUJOCO_GL", "disable")
+    monkeypatch.delenv("PYOPENGL_PLATFORM", raising=False)
+    results = _write(tmp_path / "r", make_record)
+    site = tmp_path / "site"
+    _kept_site(site, load_records(results), "held 2.00 s of 2.00 s (kept)")
+    for path, record in load_records(results):  # the same runs on the noisy dataset
+        again = make_record(model=record.model.name, seed=record.seed, rmse=RMSE["gnn"])
+        again["dataset"]["id"] = NOISY
+        again["metrics"]["closed-loop"] = {"trained_on": NOISY, "pd_normalized_score": 0.5}
+        write_record(again, results / f"noisy-{path.name}")
+    both = results
+    left_out = invoke(
+        "leaderboard", "--results", both, "--html", site, "--clips", "--without-clips", NOISY
+    )
+    assert left_out.exit_code == 0, left_out.output
+    kept = (site / f"boards/hexa__{HEXA}.html").read_text()
+    assert kept.count("held 2.00 s of 2.00 s (kept)") == 2
+    page = (site / f"boards/hexa__{NOISY}.html").read_text()
+    section = page[page.index('<section id="clips">') :]
+    section = section[: section.index("</section>")]
+    assert "built without them" in section and "<img" not in section
+    assert not list((site / "clips").glob(f"hexa__{NOISY}*"))
+    # without the flag, the noisy page's missing checkpoints stop the build
+    assert "no closed-loop checkpoint" in error_line(
+        invoke("leaderboard", "--results", both, "--html", site, "--clips"), 1
+    )
+
+
+def test_without_clips_names_a_dataset_of_the_board(tmp_path, make_record):
+    results = _write(tmp_path / "r", make_record)
+    args = ("leaderboard", "--results", results, "--html", tmp_path / "site")
+    assert error_line(invoke(*args, "--clips", "--without-clips", "hexa-nothing"), 1) == (
+        "Error: --without-clips hexa-nothing: no board page of that dataset"
+    )
+    assert "--without-clips needs --clips" in error_line(invoke(*args, "--without-clips", HEXA), 2)
+
+
 def test_clips_need_the_site(tmp_path, make_record):
     result = invoke("leaderboard", "--results", _write(tmp_path / "r", make_record), "--clips")
     assert "--clips and --clips-from need --html" in error_line(result, 2)

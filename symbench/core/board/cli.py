@@ -54,6 +54,15 @@ from symbench.core.common.errors import SymbenchError
     "(implies --clips).",
 )
 @click.option(
+    "--without-clips",
+    "without_clips",
+    multiple=True,
+    metavar="DATASET",
+    help="With --clips: build this dataset's board page without clips, saying so on the page "
+    "(its judged networks are not at hand, e.g. trained on a CPU of another kernel class). "
+    "Repeatable.",
+)
+@click.option(
     "--include-board",
     "include",
     multiple=True,
@@ -68,6 +77,7 @@ def leaderboard(
     board: Path,
     clips: bool,
     clips_from: Path | None,
+    without_clips: tuple[str, ...],
     include: tuple[Path, ...],
 ) -> None:
     """Aggregate records (mean, std and 95 % bootstrap interval over seeds), rank by test
@@ -80,6 +90,8 @@ def leaderboard(
     checkpoints = clips_from if clips_from is not None else results if clips else None
     if checkpoints is not None and html is None:
         raise click.UsageError("--clips and --clips-from need --html")
+    if without_clips and checkpoints is None:
+        raise click.UsageError("--without-clips needs --clips or --clips-from")
     if checkpoints is not None and include:
         raise click.UsageError("--clips renders your own runs' checkpoints: no --include-board")
     markdown = None if html is not None and out is None else out or Path("leaderboards")
@@ -94,7 +106,7 @@ def leaderboard(
 
         use_software_gl()  # before anything loads MuJoCo
     if html is not None:
-        site = build_site(results, html, board, checkpoints, records)
+        site = build_site(results, html, board, checkpoints, records, frozenset(without_clips))
         click.echo(f"wrote {html / 'index.html'} and {len(site) - 1} more files of the site")
     if markdown is not None:
         for path in write_tables(records, writable_folder(markdown, "--out")):

@@ -52,15 +52,21 @@ def build_site(
     board: Path = Path("leaderboards"),
     clips: Path | None = None,
     records: list[tuple[Path, RecordV1]] | None = None,
+    without_clips: frozenset[str] = frozenset(),
 ) -> list[Path]:
     """Build the site of the records under `results` (or of `records`, when given: one's own
     with other boards', `included.with_boards`) into `out`; entry pages say whether the
     published `board` holds each record; with `clips`, the results folder whose checkpoints
-    the clips load, board pages show them. Returns the files written, sorted."""
+    the clips load, board pages show them, but for the datasets in `without_clips`, whose
+    pages say they were built without. Returns the files written, sorted."""
     records = load_records(results) if records is None else records
     table = aggregate(records)
     kept = out if (out / MARKER).is_file() else None  # an earlier build's clips
-    planned = None if clips is None else clip_plan(default_size(table), records, clips, kept)
+    planned = (
+        None
+        if clips is None
+        else clip_plan(default_size(table), records, clips, kept, without_clips)
+    )
     _check_replaceable(out)
     writable_folder(out, "site folder")
     staging = staging_folder(out)
@@ -98,8 +104,9 @@ def _build(
         rows = shown[(shown.robot == page.robot) & (shown.dataset == page.dataset)]
         plots[page.path] = draw_plots(rows, page.robot, page.dataset, site)
         page_clips = None if clips is None else clips[page.robot, page.dataset]
-        drawn = None if page_clips is None else draw_clips(page_clips, site)
-        renderer.board(page, plots[page.path], drawn)
+        left_out = clips is not None and page_clips is None
+        drawn = None if clips is None else draw_clips(page_clips or (), site)
+        renderer.board(page, plots[page.path], drawn, left_out)
     entries = entry_pages(boards, records, board)
     for entry in entries:
         renderer.entry(entry)

@@ -182,8 +182,9 @@ def closed_loop_model(path: Path, record: RecordV1, results: Path) -> StoredMode
         ) from None
 
 
-# per (robot, dataset): each clip's choice with its model, or the clip kept from a build
-ClipPlan = dict[tuple[str, str], tuple[tuple[Choice, "TrainedModel | KeptClip"], ...]]
+# per (robot, dataset): each clip's choice with its model, or the clip kept from a build;
+# None for a page left without clips (`--without-clips`)
+ClipPlan = dict[tuple[str, str], tuple[tuple[Choice, "TrainedModel | KeptClip"], ...] | None]
 
 
 def clip_plan(
@@ -191,10 +192,12 @@ def clip_plan(
     records: list[tuple[Path, RecordV1]],
     results: Path,
     kept: Path | None = None,
+    without: frozenset[str] = frozenset(),
 ) -> ClipPlan:
     """Per (robot, dataset) of the aggregate `table`: the clips' choices, each with its
     judged model under `results` or, where that is missing or not the judged network, its
-    clip kept in the built site `kept`; all found before anything is rendered or written."""
+    clip kept in the built site `kept`; all found before anything is rendered or written.
+    The datasets in `without` get None: their pages are built without clips."""
 
     def shown(choice: Choice) -> TrainedModel | KeptClip:
         reused = None if kept is None else kept_clip(kept, choice)
@@ -205,8 +208,13 @@ def clip_plan(
                 raise
             return reused
 
+    unknown = sorted(without - set(table["dataset"]))
+    if unknown:
+        raise SymbenchError(f"--without-clips {unknown[0]}: no board page of that dataset")
     return {
-        (str(robot), str(did)): tuple((c, shown(c)) for c in choose(rows, records))
+        (str(robot), str(did)): (
+            None if did in without else tuple((c, shown(c)) for c in choose(rows, records))
+        )
         for (robot, did), rows in table.groupby(["robot", "dataset"], sort=True)
     }
 

@@ -87,10 +87,22 @@ class Renderer:
         self._page("compare.html", names.COMPARE)
 
     def board(
-        self, page: BoardPage, plots: tuple[Plot, ...], clips: tuple[Clip, ...] | None = None
+        self,
+        page: BoardPage,
+        plots: tuple[Plot, ...],
+        clips: tuple[Clip, ...] | None = None,
+        clips_left_out: bool = False,
     ) -> None:
-        """`clips` None: a site built without clips (no section for them)."""
-        self._page("board.html", page.path, page=page, plots=plots, clips=clips)
+        """`clips` None: a site built without clips (no section for them); `clips_left_out`:
+        this page built without them in a site with clips (`--without-clips`)."""
+        self._page(
+            "board.html",
+            page.path,
+            page=page,
+            plots=plots,
+            clips=clips,
+            clips_left_out=clips_left_out,
+        )
         self.written += [p.path for p in plots if p.path is not None]
         self.written += [c.path for c in clips or ()]
 
