@@ -1,4 +1,2024 @@
 window.SYMBENCH_ENTRIES = {
+ "hexa-climb-paper-v7__cosine__control-rotation__ffnn-leg__acc__torch": {
+  "board": "boards/hexa__hexa-climb-paper-v7.html#cosine--control-rotation",
+  "dataset": "hexa-climb-paper-v7",
+  "entry": "entries/hexa-climb-paper-v7__cosine__control-rotation__ffnn-leg__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "3",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.119 [0.115, 0.121]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.142 [0.138, 0.145]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.534 [0.487, 0.606]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "172 306",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "50 000",
+    ""
+   ],
+   [
+    "epochs",
+    "20.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3",
+    ""
+   ],
+   [
+    "seeds",
+    "3",
+    ""
+   ]
+  ],
+  "protocol": "cosine",
+  "robot": "hexa",
+  "split": "control-rotation",
+  "title": "ffnn-leg (acc, torch)"
+ },
+ "hexa-climb-paper-v7__cosine__control-rotation__ffnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-paper-v7.html#cosine--control-rotation",
+  "dataset": "hexa-climb-paper-v7",
+  "entry": "entries/hexa-climb-paper-v7__cosine__control-rotation__ffnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "4",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.195 [0.189, 0.198]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.233 [0.225, 0.237]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.11 [1.02, 1.21]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.01 [0.89, 1.15]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "157 970",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.027",
+    ""
+   ],
+   [
+    "steps",
+    "50 000",
+    ""
+   ],
+   [
+    "epochs",
+    "20.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3",
+    ""
+   ],
+   [
+    "seeds",
+    "3",
+    ""
+   ]
+  ],
+  "protocol": "cosine",
+  "robot": "hexa",
+  "split": "control-rotation",
+  "title": "ffnn (acc, torch)"
+ },
+ "hexa-climb-paper-v7__cosine__control-rotation__gnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-paper-v7.html#cosine--control-rotation",
+  "dataset": "hexa-climb-paper-v7",
+  "entry": "entries/hexa-climb-paper-v7__cosine__control-rotation__gnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.459 [0.443, 0.467]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.548 [0.530, 0.557]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.38 [1.27, 1.54]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.56 [1.49, 1.69]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.009",
+    ""
+   ],
+   [
+    "steps",
+    "50 000",
+    ""
+   ],
+   [
+    "epochs",
+    "20.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3",
+    ""
+   ],
+   [
+    "seeds",
+    "3",
+    ""
+   ]
+  ],
+  "protocol": "cosine",
+  "robot": "hexa",
+  "split": "control-rotation",
+  "title": "gnn (acc, torch)"
+ },
+ "hexa-climb-paper-v7__cosine__control-rotation__sdgnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-paper-v7.html#cosine--control-rotation",
+  "dataset": "hexa-climb-paper-v7",
+  "entry": "entries/hexa-climb-paper-v7__cosine__control-rotation__sdgnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0628 [0.0614, 0.0642]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0750 [0.0734, 0.0768]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "4.63 × 10⁻⁷ [3.94 × 10⁻⁷, 5.93 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "50 000",
+    ""
+   ],
+   [
+    "epochs",
+    "20.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3",
+    ""
+   ],
+   [
+    "seeds",
+    "3",
+    ""
+   ]
+  ],
+  "protocol": "cosine",
+  "robot": "hexa",
+  "split": "control-rotation",
+  "title": "sdgnn (acc, torch)"
+ },
+ "hexa-climb-paper-v7__cosine__control-rotation__sdnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-paper-v7.html#cosine--control-rotation",
+  "dataset": "hexa-climb-paper-v7",
+  "entry": "entries/hexa-climb-paper-v7__cosine__control-rotation__sdnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "1",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0494 [0.0487, 0.0502]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0590 [0.0583, 0.0600]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "3.49 × 10⁻⁷ [3.09 × 10⁻⁷, 4.23 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0135",
+    ""
+   ],
+   [
+    "steps",
+    "50 000",
+    ""
+   ],
+   [
+    "epochs",
+    "20.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3",
+    ""
+   ],
+   [
+    "seeds",
+    "3",
+    ""
+   ]
+  ],
+  "protocol": "cosine",
+  "robot": "hexa",
+  "split": "control-rotation",
+  "title": "sdnn (acc, torch)"
+ },
+ "hexa-climb-paper-v7__cosine__fraction-0.1__ffnn-leg__acc__torch": {
+  "board": "boards/hexa__hexa-climb-paper-v7.html#cosine--fraction-0-1",
+  "dataset": "hexa-climb-paper-v7",
+  "entry": "entries/hexa-climb-paper-v7__cosine__fraction-0.1__ffnn-leg__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "3",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.157 [0.156, 0.159]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.188 [0.186, 0.190]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.771 [0.721, 0.848]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "172 306",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "48 333 [45 000, 50 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "34.7 [32.0, 36.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "patience 3",
+    ""
+   ],
+   [
+    "seeds",
+    "3",
+    ""
+   ]
+  ],
+  "protocol": "cosine",
+  "robot": "hexa",
+  "split": "fraction-0.1",
+  "title": "ffnn-leg (acc, torch)"
+ },
+ "hexa-climb-paper-v7__cosine__fraction-0.1__ffnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-paper-v7.html#cosine--fraction-0-1",
+  "dataset": "hexa-climb-paper-v7",
+  "entry": "entries/hexa-climb-paper-v7__cosine__fraction-0.1__ffnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "4",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.344 [0.330, 0.370]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.410 [0.393, 0.443]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.52 [1.46, 1.60]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.18 [1.06, 1.29]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "157 970",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.027",
+    ""
+   ],
+   [
+    "steps",
+    "50 000",
+    ""
+   ],
+   [
+    "epochs",
+    "36.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3",
+    ""
+   ],
+   [
+    "seeds",
+    "3",
+    ""
+   ]
+  ],
+  "protocol": "cosine",
+  "robot": "hexa",
+  "split": "fraction-0.1",
+  "title": "ffnn (acc, torch)"
+ },
+ "hexa-climb-paper-v7__cosine__fraction-0.1__gnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-paper-v7.html#cosine--fraction-0-1",
+  "dataset": "hexa-climb-paper-v7",
+  "entry": "entries/hexa-climb-paper-v7__cosine__fraction-0.1__gnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.596 [0.559, 0.656]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.711 [0.668, 0.781]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.53 [1.29, 1.71]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.59 [1.47, 1.75]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.009",
+    ""
+   ],
+   [
+    "steps",
+    "41 667 [35 000, 50 000]",
+    ""
+   ],
+   [
+    "epochs",
+    "30.0 [25.0, 36.0]",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 1, patience 2",
+    ""
+   ],
+   [
+    "seeds",
+    "3",
+    ""
+   ]
+  ],
+  "protocol": "cosine",
+  "robot": "hexa",
+  "split": "fraction-0.1",
+  "title": "gnn (acc, torch)"
+ },
+ "hexa-climb-paper-v7__cosine__fraction-0.1__sdgnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-paper-v7.html#cosine--fraction-0-1",
+  "dataset": "hexa-climb-paper-v7",
+  "entry": "entries/hexa-climb-paper-v7__cosine__fraction-0.1__sdgnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0746 [0.0733, 0.0767]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0891 [0.0876, 0.0913]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "3.83 × 10⁻⁷ [3.53 × 10⁻⁷, 4.11 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "50 000",
+    ""
+   ],
+   [
+    "epochs",
+    "36.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3",
+    ""
+   ],
+   [
+    "seeds",
+    "3",
+    ""
+   ]
+  ],
+  "protocol": "cosine",
+  "robot": "hexa",
+  "split": "fraction-0.1",
+  "title": "sdgnn (acc, torch)"
+ },
+ "hexa-climb-paper-v7__cosine__fraction-0.1__sdnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-paper-v7.html#cosine--fraction-0-1",
+  "dataset": "hexa-climb-paper-v7",
+  "entry": "entries/hexa-climb-paper-v7__cosine__fraction-0.1__sdnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "1",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0586 [0.0574, 0.0594]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0699 [0.0687, 0.0709]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "3.39 × 10⁻⁷ [3.23 × 10⁻⁷, 3.68 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "-",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "-",
+    "lower"
+   ],
+   [
+    "parameters",
+    "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0135",
+    ""
+   ],
+   [
+    "steps",
+    "50 000",
+    ""
+   ],
+   [
+    "epochs",
+    "36.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3",
+    ""
+   ],
+   [
+    "seeds",
+    "3",
+    ""
+   ]
+  ],
+  "protocol": "cosine",
+  "robot": "hexa",
+  "split": "fraction-0.1",
+  "title": "sdnn (acc, torch)"
+ },
+ "hexa-climb-paper-v7__cosine__iid__ffnn-leg__acc__torch": {
+  "board": "boards/hexa__hexa-climb-paper-v7.html#cosine--iid",
+  "dataset": "hexa-climb-paper-v7",
+  "entry": "entries/hexa-climb-paper-v7__cosine__iid__ffnn-leg__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "3",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0749 [0.0746, 0.0753]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.0918 [0.0782, 0.1020]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.102 [0.087, 0.111]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0895 [0.0893, 0.0897]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.321 [0.305, 0.350]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "1.24 [1.08, 1.35]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0419 [0.0387, 0.0465]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "172 306",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "50 000",
+    ""
+   ],
+   [
+    "epochs",
+    "3.00",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3",
+    ""
+   ],
+   [
+    "seeds",
+    "3",
+    ""
+   ]
+  ],
+  "protocol": "cosine",
+  "robot": "hexa",
+  "split": "iid",
+  "title": "ffnn-leg (acc, torch)"
+ },
+ "hexa-climb-paper-v7__cosine__iid__ffnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-paper-v7.html#cosine--iid",
+  "dataset": "hexa-climb-paper-v7",
+  "entry": "entries/hexa-climb-paper-v7__cosine__iid__ffnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "4",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0992 [0.0969, 0.1011]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.0409 [0.0363, 0.0453]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.0432 [0.0377, 0.0468]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.118 [0.116, 0.120]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "0.505 [0.430, 0.606]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0.557 [0.491, 0.685]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "0.669 [0.623, 0.717]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0509 [0.0450, 0.0551]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "157 970",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.027",
+    ""
+   ],
+   [
+    "steps",
+    "50 000",
+    ""
+   ],
+   [
+    "epochs",
+    "3.00",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3",
+    ""
+   ],
+   [
+    "seeds",
+    "3",
+    ""
+   ]
+  ],
+  "protocol": "cosine",
+  "robot": "hexa",
+  "split": "iid",
+  "title": "ffnn (acc, torch)"
+ },
+ "hexa-climb-paper-v7__cosine__iid__gnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-paper-v7.html#cosine--iid",
+  "dataset": "hexa-climb-paper-v7",
+  "entry": "entries/hexa-climb-paper-v7__cosine__iid__gnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.202 [0.185, 0.214]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.0188 [0.0138, 0.0278]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.0392 [0.0351, 0.0416]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.242 [0.222, 0.256]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.06 [0.91, 1.14]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.41 [1.22, 1.57]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "0.630 [0.603, 0.661]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.109 [0.087, 0.119]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.009",
+    ""
+   ],
+   [
+    "steps",
+    "50 000",
+    ""
+   ],
+   [
+    "epochs",
+    "3.00",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3",
+    ""
+   ],
+   [
+    "seeds",
+    "3",
+    ""
+   ]
+  ],
+  "protocol": "cosine",
+  "robot": "hexa",
+  "split": "iid",
+  "title": "gnn (acc, torch)"
+ },
+ "hexa-climb-paper-v7__cosine__iid__sdgnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-paper-v7.html#cosine--iid",
+  "dataset": "hexa-climb-paper-v7",
+  "entry": "entries/hexa-climb-paper-v7__cosine__iid__sdgnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0505 [0.0490, 0.0520]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.521 [0.400, 0.675]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.566 [0.429, 0.749]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0603 [0.0586, 0.0619]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "4.77 × 10⁻⁷ [4.42 × 10⁻⁷, 5.13 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0.333 [0.250, 0.375]",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "5.77 [4.44, 7.54]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0201 [0.0174, 0.0232]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "50 000",
+    ""
+   ],
+   [
+    "epochs",
+    "3.00",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3",
+    ""
+   ],
+   [
+    "seeds",
+    "3",
+    ""
+   ]
+  ],
+  "protocol": "cosine",
+  "robot": "hexa",
+  "split": "iid",
+  "title": "sdgnn (acc, torch)"
+ },
+ "hexa-climb-paper-v7__cosine__iid__sdnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-paper-v7.html#cosine--iid",
+  "dataset": "hexa-climb-paper-v7",
+  "entry": "entries/hexa-climb-paper-v7__cosine__iid__sdnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "1",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0392 [0.0380, 0.0405]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.553 [0.431, 0.741]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.590 [0.456, 0.810]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0468 [0.0455, 0.0482]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "4.64 × 10⁻⁷ [4.62 × 10⁻⁷, 4.66 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0.292 [0.125, 0.625]",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "6.00 [4.70, 8.14]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0141 [0.0109, 0.0180]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0135",
+    ""
+   ],
+   [
+    "steps",
+    "50 000",
+    ""
+   ],
+   [
+    "epochs",
+    "3.00",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3",
+    ""
+   ],
+   [
+    "seeds",
+    "3",
+    ""
+   ]
+  ],
+  "protocol": "cosine",
+  "robot": "hexa",
+  "split": "iid",
+  "title": "sdnn (acc, torch)"
+ },
+ "hexa-climb-paper-v7__cosine__unseen-rotation__ffnn-leg__acc__torch": {
+  "board": "boards/hexa__hexa-climb-paper-v7.html#cosine--unseen-rotation",
+  "dataset": "hexa-climb-paper-v7",
+  "entry": "entries/hexa-climb-paper-v7__cosine__unseen-rotation__ffnn-leg__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "3-4",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.723 [0.705, 0.735]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.0192 [0.0145, 0.0225]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.0303 [0.0237, 0.0346]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.865 [0.844, 0.877]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.35 [1.11, 1.81]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "0.547 [0.509, 0.584]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0914 [0.0874, 0.0985]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "172 306",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "50 000",
+    ""
+   ],
+   [
+    "epochs",
+    "20.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3",
+    ""
+   ],
+   [
+    "seeds",
+    "3",
+    ""
+   ]
+  ],
+  "protocol": "cosine",
+  "robot": "hexa",
+  "split": "unseen-rotation",
+  "title": "ffnn-leg (acc, torch)"
+ },
+ "hexa-climb-paper-v7__cosine__unseen-rotation__ffnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-paper-v7.html#cosine--unseen-rotation",
+  "dataset": "hexa-climb-paper-v7",
+  "entry": "entries/hexa-climb-paper-v7__cosine__unseen-rotation__ffnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "5",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.915 [0.880, 0.967]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "-0.00274 [-0.00519, 0.00080]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "-0.00538 [-0.01312, 0.00211]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "1.09 [1.05, 1.16]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.71 [1.62, 1.80]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0.951 [0.926, 0.970]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "0.200 [0.151, 0.250]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0963 [0.0882, 0.1051]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "157 970",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.027",
+    ""
+   ],
+   [
+    "steps",
+    "50 000",
+    ""
+   ],
+   [
+    "epochs",
+    "20.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3",
+    ""
+   ],
+   [
+    "seeds",
+    "3",
+    ""
+   ]
+  ],
+  "protocol": "cosine",
+  "robot": "hexa",
+  "split": "unseen-rotation",
+  "title": "ffnn (acc, torch)"
+ },
+ "hexa-climb-paper-v7__cosine__unseen-rotation__gnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-paper-v7.html#cosine--unseen-rotation",
+  "dataset": "hexa-climb-paper-v7",
+  "entry": "entries/hexa-climb-paper-v7__cosine__unseen-rotation__gnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "3-4",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.685 [0.649, 0.728]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.0291 [0.0217, 0.0371]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.0502 [0.0399, 0.0621]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.819 [0.777, 0.868]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "1.52 [1.40, 1.76]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "1.70 [1.60, 1.79]",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "0.741 [0.637, 0.882]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0963 [0.0912, 0.1013]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "90 177",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.009",
+    ""
+   ],
+   [
+    "steps",
+    "50 000",
+    ""
+   ],
+   [
+    "epochs",
+    "20.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 2, patience 1",
+    ""
+   ],
+   [
+    "seeds",
+    "3",
+    ""
+   ]
+  ],
+  "protocol": "cosine",
+  "robot": "hexa",
+  "split": "unseen-rotation",
+  "title": "gnn (acc, torch)"
+ },
+ "hexa-climb-paper-v7__cosine__unseen-rotation__sdgnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-paper-v7.html#cosine--unseen-rotation",
+  "dataset": "hexa-climb-paper-v7",
+  "entry": "entries/hexa-climb-paper-v7__cosine__unseen-rotation__sdgnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "1-2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0627 [0.0577, 0.0704]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.508 [0.450, 0.577]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.594 [0.518, 0.662]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0749 [0.0688, 0.0843]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "4.48 × 10⁻⁷ [4.10 × 10⁻⁷, 4.86 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0.333 [0.125, 0.500]",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "6.04 [5.30, 6.72]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0330 [0.0247, 0.0437]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "45 619",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.003",
+    ""
+   ],
+   [
+    "steps",
+    "50 000",
+    ""
+   ],
+   [
+    "epochs",
+    "20.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3",
+    ""
+   ],
+   [
+    "seeds",
+    "3",
+    ""
+   ]
+  ],
+  "protocol": "cosine",
+  "robot": "hexa",
+  "split": "unseen-rotation",
+  "title": "sdgnn (acc, torch)"
+ },
+ "hexa-climb-paper-v7__cosine__unseen-rotation__sdnn__acc__torch": {
+  "board": "boards/hexa__hexa-climb-paper-v7.html#cosine--unseen-rotation",
+  "dataset": "hexa-climb-paper-v7",
+  "entry": "entries/hexa-climb-paper-v7__cosine__unseen-rotation__sdnn__acc__torch.html",
+  "metrics": [
+   [
+    "rank",
+    "1-2",
+    "lower"
+   ],
+   [
+    "rmse_Nm",
+    "0.0496 [0.0490, 0.0502]",
+    "lower"
+   ],
+   [
+    "cl_tracking",
+    "0.546 [0.463, 0.590]",
+    "higher"
+   ],
+   [
+    "cl_score",
+    "0.617 [0.525, 0.681]",
+    "higher"
+   ],
+   [
+    "variant",
+    "acc",
+    ""
+   ],
+   [
+    "backend",
+    "torch",
+    ""
+   ],
+   [
+    "nrmse",
+    "0.0594 [0.0585, 0.0600]",
+    "lower"
+   ],
+   [
+    "equiv_err",
+    "3.60 × 10⁻⁷ [3.11 × 10⁻⁷, 3.91 × 10⁻⁷]",
+    "lower"
+   ],
+   [
+    "invar_change",
+    "0",
+    "lower"
+   ],
+   [
+    "cl_success",
+    "0.375 [0.250, 0.500]",
+    "higher"
+   ],
+   [
+    "cl_held_s",
+    "6.26 [5.37, 6.90]",
+    "higher"
+   ],
+   [
+    "cl_rmse_rad",
+    "0.0242 [0.0187, 0.0271]",
+    "lower"
+   ],
+   [
+    "parameters",
+    "152 835",
+    ""
+   ],
+   [
+    "learning_rate",
+    "0.0135",
+    ""
+   ],
+   [
+    "steps",
+    "50 000",
+    ""
+   ],
+   [
+    "epochs",
+    "20.0",
+    ""
+   ],
+   [
+    "stopped_by",
+    "budget 3",
+    ""
+   ],
+   [
+    "seeds",
+    "3",
+    ""
+   ]
+  ],
+  "protocol": "cosine",
+  "robot": "hexa",
+  "split": "unseen-rotation",
+  "title": "sdnn (acc, torch)"
+ },
  "hexa-climb-small-v7__converge__control-heading__ffnn-leg__acc__torch": {
   "board": "boards/hexa__hexa-climb-small-v7.html#converge--control-heading",
   "dataset": "hexa-climb-small-v7",
