@@ -1,14 +1,17 @@
-"""The torch predictor runs a TorchScript trace only where the trace is faithful."""
+"""The torch predictor runs a TorchScript trace only where the trace is faithful, and in pieces
+of PREDICT_ROWS rows that change no prediction."""
 
 from __future__ import annotations
 
 import numpy as np
+import pytest
 import torch
 
 from symbench.core.data.views.model_dims import dims_of
 from symbench.core.plugin.entries import ModelEntry
 from symbench.core.training.backends import get_backend
 from symbench.core.training.normalization import Normalizer
+from symbench.testing.synthetic import synthetic_views
 
 
 class SignBranching(torch.nn.Module):
@@ -64,3 +67,33 @@ def test_traced_predictor_equals_eager_bitwise_at_any_batch_size(smoke):
         with torch.no_grad():
             expected = eager(torch.from_numpy(x)).numpy().astype(np.float64)
         np.testing.assert_array_equal(predict({"x": x}), expected)
+
+
+@pytest.mark.parametrize("dtype", [np.float32, np.float64])
+@pytest.mark.parametrize("name", ["ffnn", "ffnn-leg", "gnn", "sdgnn", "sdnn"])
+def test_predictions_in_pieces_equal_one_call_bitwise(name, dtype, monkeypatch):
+    """Predictions and the validation loss run the network on PREDICT_ROWS rows at a time
+    for speed; each row must come out as it does from one call of every row (a network or
+    kernel whose rows depended on the call's size would fail), the last piece a short one."""
+    from symbench.core.plugin import registry
+    from symbench.core.training.backends import torch_backend
+
+    data = synthetic_views(6, 2 * torch_backend.PREDICT_ROWS + 37, seed=3)
+    entry = registry.model(name, "torch")
+    view = data[entry.view]
+    dims = dims_of(view)
+    backend = get_backend("torch")
+    params = backend.init_params(entry, dims, {}, 0)
+    normalizer = Normalizer.fit(view)
+
+    def figures() -> tuple[np.ndarray, float]:
+        predict = backend.make_predictor(entry, dims, {}, params, normalizer, dtype)
+        trainer = backend.make_trainer(entry, dims, {}, params, 1e-3)
+        trainer.set_data(view.inputs, view.target, view.inputs, view.target)
+        return predict(view.inputs), trainer.val_loss()
+
+    pieces = figures()
+    monkeypatch.setattr(torch_backend, "PREDICT_ROWS", 10**9)
+    whole = figures()
+    np.testing.assert_array_equal(pieces[0], whole[0])
+    assert pieces[1] == whole[1]
