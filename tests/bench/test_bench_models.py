@@ -104,9 +104,12 @@ def _latency_is_measured_with_the_fewest_threads_only(settings):
     assert all(r[f"infer_lockstep_us_{r['lockstep_best']}"] > 0 for r in first["rows"])
     # torch rows also time their ONNX export under ONNX Runtime, JAX rows do not
     assert all(("infer_batch1_us_onnx" in r) == (r["backend"] == "torch") for r in first["rows"])
+    # an evaluator's call, in the backend's own mode (evaluators never call ONNX Runtime)
+    assert all(r[f"predict_rows_per_s_{r['train_best']}"] > 0 for r in first["rows"])
+    assert not any("predict_rows_per_s_onnx" in r for r in first["rows"])
     for setting in others:
         assert not setting["latency_measured"]
-        assert not any(key.startswith("infer") for r in setting["rows"] for key in r)
+        assert not any(k.startswith(("infer", "predict")) for r in setting["rows"] for k in r)
 
 
 @pytest.mark.parametrize(

@@ -37,6 +37,9 @@ from symbench.core.training.onnx_export import onnx_bytes, onnx_predictor
 BATCH = 64
 # the closed loop's call on `small`: every reference at every PD fraction in one batch
 LOCKSTEP = SMALL.closed_loop.references * len(SMALL.closed_loop.pd_fractions)
+# an evaluator's call: the test rows of the transform-based evaluators (the synthetic views
+# of `measure_setting` hold exactly this many)
+EVAL_ROWS = SMALL.evaluation.max_samples
 CALL_STEPS = 16  # training steps per timed call (gnn in torch: about 0.2 s)
 
 Say = Callable[[str], None]
@@ -58,11 +61,11 @@ def train_rate(entry, views, compiled: bool, seconds: float) -> float:
     return best_rate(lambda: trainer.train_epoch(order), order.size, seconds)
 
 
-def latency_us(entry, views, mode: str, seconds: float, batch: int = 1) -> float:
+def latency_us(entry, views, mode: str, seconds: float, batch: int = 1, calls: int = 50) -> float:
     """Median wall time of one prediction of `batch` rows (normalization included),
-    microseconds; `mode` plain or compiled (the backend's predictor), or onnx (the model
-    exported as `symbench export --batch BATCH` writes it, run by ONNX Runtime on one
-    thread)."""
+    microseconds, over `seconds` and at least `calls` calls; `mode` plain or compiled (the
+    backend's predictor), or onnx (the model exported as `symbench export --batch BATCH`
+    writes it, run by ONNX Runtime on one thread)."""
     data = views[entry.view]
     dims = dims_of(data)
     backend = get_backend(entry.backend)
@@ -74,11 +77,11 @@ def latency_us(entry, views, mode: str, seconds: float, batch: int = 1) -> float
         compiled = mode == "compiled"
         predict = backend.make_predictor(entry, dims, {}, params, normalizer, np.float32, compiled)
     rows = {k: v[:batch].astype(np.float32) for k, v in data.inputs.items()}
-    for _ in range(20):
+    for _ in range(min(20, calls)):
         predict(rows)
     times: list[float] = []
     start = time.perf_counter()
-    while time.perf_counter() - start < seconds or len(times) < 50:
+    while time.perf_counter() - start < seconds or len(times) < calls:
         t = time.perf_counter()
         predict(rows)
         times.append(time.perf_counter() - t)
@@ -89,8 +92,8 @@ def measure(
     entry, views, seconds: float, modes: tuple[bool, ...], latency: bool, say: Say
 ) -> dict[str, Any]:
     """One row: training rate (and, with `latency`, the latency of a batch-1 call and of the
-    closed loop's lockstep call) in each mode, and the FLOPs per second of training in its
-    best mode."""
+    closed loop's lockstep call, and the rows per second of an evaluator's call) in each
+    mode, and the FLOPs per second of training in its best mode."""
     row: dict[str, Any] = {"model": entry.name, "backend": entry.backend}
     names = ["compiled" if c else "plain" for c in modes]
     for compiled, mode in zip(modes, names):
@@ -104,6 +107,10 @@ def measure(
             row[f"infer_batch1_us_{mode}"] = latency_us(entry, views, mode, seconds)
             say(f"lockstep inference ({LOCKSTEP} rows), {mode}")
             row[f"infer_lockstep_us_{mode}"] = latency_us(entry, views, mode, seconds, LOCKSTEP)
+        for mode in names:  # evaluators call the backend's predictor, never ONNX Runtime
+            say(f"evaluation predictions ({EVAL_ROWS} rows), {mode}")
+            call_us = latency_us(entry, views, mode, seconds, EVAL_ROWS, calls=3)
+            row[f"predict_rows_per_s_{mode}"] = EVAL_ROWS / (1e-6 * call_us)
         row["infer_best"] = min(inference, key=lambda m: row[f"infer_batch1_us_{m}"])
         row["lockstep_best"] = min(inference, key=lambda m: row[f"infer_lockstep_us_{m}"])
     say("counting FLOPs")
@@ -120,7 +127,7 @@ def measure_setting(job: dict[str, Any], cores: list[int], say: Say) -> dict[str
     from symbench.testing.synthetic import synthetic_views
 
     started = time.perf_counter()
-    views = synthetic_views(load_robot(job["robot"]).n_legs, 64 * BATCH, seed=0)
+    views = synthetic_views(load_robot(job["robot"]).n_legs, EVAL_ROWS, seed=0)
     entries = [
         registry.model(n, b) for b in BACKENDS for n in job["models"] if b in job["backends"]
     ]

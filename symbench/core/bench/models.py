@@ -1,6 +1,7 @@
 """`symbench bench models`: training throughput (batch 64), how close it comes to the CPU's
-matmul limit, and inference latency (batch 1, and the closed loop's lockstep batch of every
-reference at every PD fraction on `small`), per thread setting.
+matmul limit, inference latency (batch 1, and the closed loop's lockstep batch of every
+reference at every PD fraction on `small`) and the throughput of an evaluator's call (4096
+rows), per thread setting.
 
 Every model in both backends, on synthetic data shaped like the robot's, in each backend's
 default mode, or (`--modes both`) uncompiled and compiled side by side (torch.compile; JAX:
@@ -139,6 +140,7 @@ def _table(robot: str, setting: dict[str, Any]) -> Table:
     inference = [*modes, *(["onnx"] if any("infer_batch1_us_onnx" in r for r in rows) else [])]
     columns += [f"infer us {m}" for m in inference] if latency else []
     columns += [f"lockstep us {m}" for m in inference] if latency else []
+    columns += [f"eval rows/s {m}" for m in modes] if latency else []
     for col in columns:
         table.add_column(col, justify="right")
     for r in rows:
@@ -153,6 +155,7 @@ def _table(robot: str, setting: dict[str, Any]) -> Table:
                 for size, best in (("batch1", "infer_best"), ("lockstep", "lockstep_best"))
                 for m in inference
             ]
+            cells += [_figure(r, f"predict_rows_per_s_{m}", "{:,.0f}", False) for m in modes]
         table.add_row(*cells)
     return table
 

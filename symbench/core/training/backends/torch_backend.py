@@ -65,7 +65,24 @@ def in_pieces(
         rows = [x[start : start + PREDICT_ROWS] for x in xs]
         pieces.append(run(*rows))
         check_output(entry, dims, pieces[-1].shape, len(rows[0]))
-    return pieces[0] if len(pieces) == 1 else torch.cat(pieces)
+    return pieces[0] if len(pieces) == 1 else _joined(pieces, len(xs[0]))
+
+
+def _joined(pieces: list[torch.Tensor], rows: int) -> torch.Tensor:
+    """The pieces as one tensor laid out in memory as one call's output would be: a graph
+    network's output is a transposed view (edges outermost), and a sum over a tensor runs in
+    its memory order, so `torch.cat`'s row-major copy changed the validation loss's last bit
+    (gnn, thousands of rows)."""
+    first = pieces[0]
+    outermost_first = sorted(range(first.dim()), key=first.stride, reverse=True)
+    shape = (rows, *first.shape[1:])
+    out = torch.empty([shape[d] for d in outermost_first], dtype=first.dtype)
+    out = out.permute(*np.argsort(outermost_first).tolist())
+    start = 0
+    for piece in pieces:
+        out[start : start + len(piece)] = piece
+        start += len(piece)
+    return out
 
 
 def build_network(
