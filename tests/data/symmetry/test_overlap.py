@@ -22,10 +22,12 @@ from symbench.core.data.symmetry.compare import (
     COMPARED,
     EXACT_TOLERANCE,
     NEAR_TOLERANCE,
+    SCREEN_MARGIN,
     Climbs,
 )
 from symbench.core.data.symmetry.overlap import DatasetOverlap, distinct_motions, image_counts
 from symbench.core.data.symmetry.raw_action import act_on_raw, rotate_scene_about_gravity
+from symbench.core.data.symmetry.report import GROUPS
 from symbench.core.data.views.frames import LegFrames
 from symbench.core.robot.specs import load_robot
 
@@ -123,6 +125,30 @@ def test_an_early_stop_changes_no_error_at_or_below_where_it_stops(robot):
                     assert NEAR_TOLERANCE < stopped <= whole
                     stops += stopped < whole
     assert stops > 0  # some comparison did stop before its last group
+
+
+@pytest.mark.parametrize("robot", ROBOTS)
+def test_the_screen_gives_every_elements_joint_error(robot):
+    """The screen's expanded form (one matrix of leg inner products per pair and shift) is
+    the joint-state group's error under every element, mirrors' joint signs included, to well
+    within its margin: a wrong relabelling, sign or norm would be off by orders more."""
+    climbs, ids = _images(robot)
+    joints = GROUPS["joint states"]
+    checked = 0
+    for k in ids.values():
+        for tier in climbs.tiers:
+            for g, _ in tier:
+                src, signs = climbs.legs(g)
+                shift = climbs._shift(0, k, None if g == climbs.group.identity else g)
+                moved = {c: climbs.joints(0)[c][:, src, :] * (1 if signs is None else signs)
+                         for c in joints}  # fmt: skip
+                exact = climbs._group_error(moved, climbs.joints(k), joints, shift)
+                screened = climbs.screen(0, k, shift, src, signs)
+                # within a tenth of the margin, even for the twins (exact ~1e-13) where the
+                # expanded form rounds worst
+                assert abs(screened - exact) < SCREEN_MARGIN / 10, (k, g, screened, exact)
+                checked += 1
+    assert checked == len(ids) * sum(len(t) for t in climbs.tiers)
 
 
 def test_distinct_motions_gather_images_per_class():

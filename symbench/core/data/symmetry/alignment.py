@@ -97,7 +97,7 @@ def _codes(raised: np.ndarray) -> np.ndarray:
     return raised @ (np.int64(1) << np.arange(raised.shape[1], dtype=np.int64))
 
 
-def _overlap(n_a: int, n_b: int, shift: int) -> tuple[slice, slice]:
+def lined_up(n_a: int, n_b: int, shift: int) -> tuple[slice, slice]:
     """The rows of a and of b that line up when row i of a is row i + shift of b."""
     start_a = max(0, -shift)
     rows = max(0, min(n_a - start_a, n_b - (start_a + shift)))
@@ -106,7 +106,7 @@ def _overlap(n_a: int, n_b: int, shift: int) -> tuple[slice, slice]:
 
 def _mismatch(x: Flags, y: Flags, shift: int) -> float:
     """The share of the rows lined up at `shift` whose flags differ (1 when none line up)."""
-    sx, sy = _overlap(len(x), len(y), shift)
+    sx, sy = lined_up(len(x), len(y), shift)
     rows = sx.stop - sx.start
     if not rows:
         return 1.0
@@ -134,7 +134,7 @@ def align(x: np.ndarray | Flags | None, y: np.ndarray | Flags | None) -> Alignme
     least = min(len(fx), len(fy)) / 2
     best: tuple[float, int] | None = None
     for shift in sorted(shifts, key=lambda s: (abs(s), s)):
-        sx, _ = _overlap(len(fx), len(fy), shift)
+        sx, _ = lined_up(len(fx), len(fy), shift)
         if sx.stop - sx.start < least:
             continue
         mismatch = _mismatch(fx, fy, shift)
@@ -152,7 +152,7 @@ def align(x: np.ndarray | Flags | None, y: np.ndarray | Flags | None) -> Alignme
 
 def aligned_rows(x: np.ndarray, y: np.ndarray, shift: int) -> tuple[np.ndarray, np.ndarray]:
     """The rows of x and of y that line up when row i of x is row i + shift of y."""
-    sx, sy = _overlap(len(x), len(y), shift)
+    sx, sy = lined_up(len(x), len(y), shift)
     return x[sx], y[sy]
 
 

@@ -39,6 +39,15 @@ heading's fit and the base are never computed for a pair whose joints already di
 error at or below the near tolerance is computed whole, so every count is what the whole
 comparison gives (on dataset v7 nearly every pair stops after the joint states).
 
+**Screen.** Nearly every pair stops after the joint states, under each of some 13 elements.
+Their squared difference under g is |a|^2 + |b|^2 - 2 sum_j <s * a_src(j), b_j> over the
+rows that line up: the norms do not depend on g (it only relabels legs and flips signs), so
+one legs x legs matrix of inner products per pair, shift and sign (`JointGram`) gives every
+element's joint error at the cost of a sum over legs. That expanded form loses digits where
+the two climbs nearly agree, so it only decides "above": an element whose screened joint
+error exceeds the early-stop threshold by `SCREEN_MARGIN` (many orders of magnitude above its
+rounding) is above it; every other element is compared as before, so every count is unchanged.
+
 **What is made once.** A paper-preset split compares each held-out climb with some 600
 training climbs under 13 elements; relabelling every joint column of every candidate, and
 converting each column to float64 and reading each flag's lift-offs per comparison, took
@@ -62,6 +71,7 @@ from symbench.core.data.symmetry.alignment import (
     aligned_rows,
     alignment_flag,
     difference,
+    lined_up,
 )
 from symbench.core.data.symmetry.raw_action import act_on_base, base_map
 from symbench.core.data.symmetry.report import GROUPS
@@ -81,6 +91,9 @@ NEAR_TOLERANCE = 0.05
 # The prefilter's bound holds for climbs compared over all their rows; twice the near
 # tolerance lets a pair compared over part of its rows (other lengths or phases) through.
 PREFILTER_SLACK = 2.0
+# How far above the early-stop threshold a screened joint error must be to decide "above":
+# its rounding is about 1e-13 of the relative error (see the module's Screen)
+SCREEN_MARGIN = 1e-6
 COMPARED = tuple(c for cols in GROUPS.values() for c in cols)
 WORLD_VECTORS = ("base_pos", "base_linvel", "base_angvel", "base_linacc")
 FLAGS = ("contact", "magnet")
@@ -136,6 +149,55 @@ def turn_about_gravity(raw: Mapping[str, np.ndarray], angle: float) -> dict[str,
     return out
 
 
+@dataclass(frozen=True)
+class Channels:
+    """A climb's joint-state columns laid out for `JointGram`: their values as (column,
+    channel, leg, row), each legs x rows block contiguous, and per column the running sum of
+    each row's squared norm (so a run of rows' sum of squares is one subtraction)."""
+
+    values: np.ndarray  # (column, channel, leg, row)
+    squares: np.ndarray  # (column, row + 1)
+
+    @classmethod
+    def of(cls, joints: Mapping[str, np.ndarray]) -> Channels:
+        columns = np.stack([joints[c] for c in GROUPS[LEG_GROUPS[0]]])  # (column, row, leg, 3)
+        per_row = np.sum(columns * columns, axis=(2, 3))
+        squares = np.concatenate([np.zeros((len(columns), 1)), np.cumsum(per_row, axis=1)], 1)
+        return cls(np.ascontiguousarray(columns.transpose(0, 3, 2, 1)), squares)
+
+
+@dataclass(frozen=True)
+class JointGram:
+    """Per joint-state column, over the rows of a pair that line up: |a|^2 + |b|^2 and, per
+    channel, the legs x legs inner products of a's legs with b's; what `Climbs.screen` needs
+    for every element (relabelling and joint signs) at that shift."""
+
+    norms: np.ndarray  # (column,)
+    products: np.ndarray  # (column, channel, leg of a, leg of b)
+    values: int  # values compared per column
+
+    @classmethod
+    def of(cls, a: Channels, b: Channels, shift: int) -> JointGram:
+        rows_a, rows_b = lined_up(a.values.shape[-1], b.values.shape[-1], shift)
+        norms = (
+            a.squares[:, rows_a.stop] - a.squares[:, rows_a.start]
+            + b.squares[:, rows_b.stop] - b.squares[:, rows_b.start]
+        )  # fmt: skip
+        products = a.values[..., rows_a] @ b.values[..., rows_b].swapaxes(-1, -2)
+        _, channels, legs, _ = a.values.shape
+        return cls(norms, products, (rows_a.stop - rows_a.start) * legs * channels)
+
+    def error(self, src: np.ndarray, signs: np.ndarray | None, scales: np.ndarray) -> float:
+        """The joint-state group's error of the element taking leg j from a's leg src[j],
+        times `signs` per channel (a mirror's; None for a rotation)."""
+        if self.values == 0:
+            return np.inf
+        matched = self.products[:, :, src, np.arange(len(src))].sum(axis=2)  # (column, channel)
+        inner = matched.sum(axis=1) if signs is None else matched @ signs
+        mean = np.maximum(self.norms - 2.0 * inner, 0.0) / self.values
+        return float(np.sqrt(np.mean(mean / scales**2)))
+
+
 @dataclass
 class Climbs:
     """Raw climbs by id, with what comparing them needs: scales, invariant summaries and the
@@ -158,6 +220,11 @@ class Climbs:
     _legs: dict[GroupElement, tuple[np.ndarray, np.ndarray | None]] = field(
         init=False, default_factory=dict
     )
+    # the pair being compared, and its JointGram per shift: elements of one pair
+    # are tried together, so older pairs' matrices are dropped rather than kept by the million
+    _gram_pair: tuple[int, int] = field(init=False, default=(-1, -1))
+    _grams: dict[int, JointGram] = field(init=False, default_factory=dict)
+    _channels: dict[int, Channels] = field(init=False, default_factory=dict)
 
     def __post_init__(self) -> None:
         self.tiers = class_tiers(self.group, self.mirrors)
@@ -247,11 +314,17 @@ class Climbs:
         self, a: int, b: int, g: GroupElement, heading: bool, decided_above: float = np.inf
     ) -> float:
         """The error of climb a, acted on by g (heading free or not), as climb b. Once a
-        group's error exceeds `decided_above` the rest is not computed and that group's error,
-        a lower bound of the whole, is returned (see the module's Early stop)."""
+        group's error exceeds `decided_above` the rest is not computed and a lower bound of
+        the whole above `decided_above` is returned: that group's error, or the joint states'
+        screened one less half the margin (see the module's Early stop and Screen)."""
         identity, climb = g == self.group.identity, self.raw[a]
         src, signs = self.legs(g)
         shift = self._shift(a, b, None if identity else g)
+        screened = self.screen(a, b, shift, src, signs) if decided_above < np.inf else 0.0
+        if screened > decided_above + SCREEN_MARGIN:
+            # the joint states alone are above (the Early stop's answer); less half the
+            # margin, far beyond the screen's rounding, the value is a lower bound, as there
+            return screened - SCREEN_MARGIN / 2
         worst = 0.0
         for name, cols in GROUPS.items():
             if name in LEG_GROUPS:  # g . a's columns of this group alone, relabelled
@@ -269,6 +342,27 @@ class Climbs:
             if worst > decided_above:
                 break
         return worst
+
+    def screen(
+        self, a: int, b: int, shift: int, src: np.ndarray, signs: np.ndarray | None
+    ) -> float:
+        """The joint-state group's error of a relabelled by (src, signs) as b, from the pair's
+        `JointGram` at this shift (see the module's Screen): accurate except where it is
+        small, so it only decides "above"; 0 (never above) where a column has no scale."""
+        scales = np.array([self.scales[c] for c in GROUPS[LEG_GROUPS[0]]])
+        if scales.min() <= 0:
+            return 0.0
+        if self._gram_pair != (a, b):
+            self._gram_pair, self._grams = (a, b), {}
+        if shift not in self._grams:
+            self._grams[shift] = JointGram.of(self.channels(a), self.channels(b), shift)
+        return self._grams[shift].error(src, signs, scales)
+
+    def channels(self, i: int) -> Channels:
+        """Climb i's joint states laid out for the Screen, made once."""
+        if i not in self._channels:
+            self._channels[i] = Channels.of(self.joints(i))
+        return self._channels[i]
 
     def _group_error(
         self,
