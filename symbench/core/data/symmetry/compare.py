@@ -42,8 +42,9 @@ comparison gives (on dataset v7 nearly every pair stops after the joint states).
 **Screen.** Nearly every pair stops after the joint states, under each of some 13 elements.
 Their squared difference under g is |a|^2 + |b|^2 - 2 sum_j <s * a_src(j), b_j> over the
 rows that line up: the norms do not depend on g (it only relabels legs and flips signs), so
-one legs x legs matrix of inner products per pair, shift and sign (`JointGram`) gives every
-element's joint error at the cost of a sum over legs. That expanded form loses digits where
+per pair and shift one legs x legs matrix of inner products per column and channel
+(`JointGram`) gives every element's joint error, a mirror's joint signs included, at the cost
+of a sum over legs. That expanded form loses digits where
 the two climbs nearly agree, so it only decides "above": an element whose screened joint
 error exceeds the early-stop threshold by `SCREEN_MARGIN` (many orders of magnitude above its
 rounding) is above it; every other element is compared as before, so every count is unchanged.
@@ -54,7 +55,9 @@ converting each column to float64 and reading each flag's lift-offs per comparis
 two thirds of that time (hexa `paper` `iid`, 2026-12-06). Each climb's joint columns in
 float64 and its alignment flags (`alignment.Flags`, also under each element) are kept
 (`Climbs.joints`, `Climbs.flags`), an element relabels only the columns of the group being
-compared, and the figures are the same to the last digit.
+compared, and the figures are the same to the last digit. The Screen keeps each climb's joint
+states a second time, laid out by channel and leg (`Climbs.channels`: about 0.33 GB more on
+hexa's paper data), and one pair's matrices at a time.
 """
 
 from __future__ import annotations
