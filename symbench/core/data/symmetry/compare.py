@@ -95,7 +95,8 @@ NEAR_TOLERANCE = 0.05
 # tolerance lets a pair compared over part of its rows (other lengths or phases) through.
 PREFILTER_SLACK = 2.0
 # How far above the early-stop threshold a screened joint error must be to decide "above":
-# its rounding is about 1e-13 of the relative error (see the module's Screen)
+# its rounding is about 1e-13 near the threshold, and at most about 1e-8 where two climbs
+# nearly agree (the expanded form's cancellation; see the module's Screen)
 SCREEN_MARGIN = 1e-6
 COMPARED = tuple(c for cols in GROUPS.values() for c in cols)
 WORLD_VECTORS = ("base_pos", "base_linvel", "base_angvel", "base_linacc")
