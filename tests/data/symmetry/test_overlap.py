@@ -22,12 +22,12 @@ from symbench.core.data.symmetry.compare import (
     COMPARED,
     EXACT_TOLERANCE,
     NEAR_TOLERANCE,
-    SCREEN_MARGIN,
     Climbs,
 )
 from symbench.core.data.symmetry.overlap import DatasetOverlap, distinct_motions, image_counts
 from symbench.core.data.symmetry.raw_action import act_on_raw, rotate_scene_about_gravity
 from symbench.core.data.symmetry.report import GROUPS
+from symbench.core.data.symmetry.screen import SCREEN_MARGIN
 from symbench.core.data.views.frames import LegFrames
 from symbench.core.robot.specs import load_robot
 

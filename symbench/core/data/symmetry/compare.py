@@ -39,15 +39,9 @@ heading's fit and the base are never computed for a pair whose joints already di
 error at or below the near tolerance is computed whole, so every count is what the whole
 comparison gives (on dataset v7 nearly every pair stops after the joint states).
 
-**Screen.** Nearly every pair stops after the joint states, under each of some 13 elements.
-Their squared difference under g is |a|^2 + |b|^2 - 2 sum_j <s * a_src(j), b_j> over the
-rows that line up: the norms do not depend on g (it only relabels legs and flips signs), so
-per pair and shift one legs x legs matrix of inner products per column and channel
-(`JointGram`) gives every element's joint error, a mirror's joint signs included, at the cost
-of a sum over legs. That expanded form loses digits where
-the two climbs nearly agree, so it only decides "above": an element whose screened joint
-error exceeds the early-stop threshold by `SCREEN_MARGIN` (many orders of magnitude above its
-rounding) is above it; every other element is compared as before, so every count is unchanged.
+**Screen.** Nearly every pair stops after the joint states: `screen` decides most of them
+"above" for every element at once (`symbench.core.data.symmetry.screen`); every other
+element is compared as here, so every count is unchanged.
 
 **What is made once.** A paper-preset split compares each held-out climb with some 600
 training climbs under 13 elements; relabelling every joint column of every candidate, and
@@ -74,10 +68,10 @@ from symbench.core.data.symmetry.alignment import (
     aligned_rows,
     alignment_flag,
     difference,
-    lined_up,
 )
 from symbench.core.data.symmetry.raw_action import act_on_base, base_map
 from symbench.core.data.symmetry.report import GROUPS
+from symbench.core.data.symmetry.screen import JOINT_STATES, SCREEN_MARGIN, Channels, JointGram
 from symbench.core.data.views.frames import LegFrames, quat_multiply, quat_to_matrix, yaw_quat
 from symbench.core.data.views.schema import FeatureType
 from symbench.core.symmetry.groups import GroupElement, LegGroup
@@ -94,10 +88,6 @@ NEAR_TOLERANCE = 0.05
 # The prefilter's bound holds for climbs compared over all their rows; twice the near
 # tolerance lets a pair compared over part of its rows (other lengths or phases) through.
 PREFILTER_SLACK = 2.0
-# How far above the early-stop threshold a screened joint error must be to decide "above":
-# its rounding is about 1e-13 near the threshold, and at most about 1e-8 where two climbs
-# nearly agree (the expanded form's cancellation; see the module's Screen)
-SCREEN_MARGIN = 1e-6
 COMPARED = tuple(c for cols in GROUPS.values() for c in cols)
 WORLD_VECTORS = ("base_pos", "base_linvel", "base_angvel", "base_linacc")
 FLAGS = ("contact", "magnet")
@@ -151,55 +141,6 @@ def turn_about_gravity(raw: Mapping[str, np.ndarray], angle: float) -> dict[str,
         out[column] = raw[column] @ rot.T
     out["base_quat"] = quat_multiply(yaw_quat(angle), raw["base_quat"])
     return out
-
-
-@dataclass(frozen=True)
-class Channels:
-    """A climb's joint-state columns laid out for `JointGram`: their values as (column,
-    channel, leg, row), each legs x rows block contiguous, and per column the running sum of
-    each row's squared norm (so a run of rows' sum of squares is one subtraction)."""
-
-    values: np.ndarray  # (column, channel, leg, row)
-    squares: np.ndarray  # (column, row + 1)
-
-    @classmethod
-    def of(cls, joints: Mapping[str, np.ndarray]) -> Channels:
-        columns = np.stack([joints[c] for c in GROUPS[LEG_GROUPS[0]]])  # (column, row, leg, 3)
-        per_row = np.sum(columns * columns, axis=(2, 3))
-        squares = np.concatenate([np.zeros((len(columns), 1)), np.cumsum(per_row, axis=1)], 1)
-        return cls(np.ascontiguousarray(columns.transpose(0, 3, 2, 1)), squares)
-
-
-@dataclass(frozen=True)
-class JointGram:
-    """Per joint-state column, over the rows of a pair that line up: |a|^2 + |b|^2 and, per
-    channel, the legs x legs inner products of a's legs with b's; what `Climbs.screen` needs
-    for every element (relabelling and joint signs) at that shift."""
-
-    norms: np.ndarray  # (column,)
-    products: np.ndarray  # (column, channel, leg of a, leg of b)
-    values: int  # values compared per column
-
-    @classmethod
-    def of(cls, a: Channels, b: Channels, shift: int) -> JointGram:
-        rows_a, rows_b = lined_up(a.values.shape[-1], b.values.shape[-1], shift)
-        norms = (
-            a.squares[:, rows_a.stop] - a.squares[:, rows_a.start]
-            + b.squares[:, rows_b.stop] - b.squares[:, rows_b.start]
-        )  # fmt: skip
-        products = a.values[..., rows_a] @ b.values[..., rows_b].swapaxes(-1, -2)
-        _, channels, legs, _ = a.values.shape
-        return cls(norms, products, (rows_a.stop - rows_a.start) * legs * channels)
-
-    def error(self, src: np.ndarray, signs: np.ndarray | None, scales: np.ndarray) -> float:
-        """The joint-state group's error of the element taking leg j from a's leg src[j],
-        times `signs` per channel (a mirror's; None for a rotation)."""
-        if self.values == 0:
-            return np.inf
-        matched = self.products[:, :, src, np.arange(len(src))].sum(axis=2)  # (column, channel)
-        inner = matched.sum(axis=1) if signs is None else matched @ signs
-        mean = np.maximum(self.norms - 2.0 * inner, 0.0) / self.values
-        return float(np.sqrt(np.mean(mean / scales**2)))
 
 
 @dataclass
@@ -353,7 +294,7 @@ class Climbs:
         """The joint-state group's error of a relabelled by (src, signs) as b, from the pair's
         `JointGram` at this shift (see the module's Screen): accurate except where it is
         small, so it only decides "above"; 0 (never above) where a column has no scale."""
-        scales = np.array([self.scales[c] for c in GROUPS[LEG_GROUPS[0]]])
+        scales = np.array([self.scales[c] for c in JOINT_STATES])
         if scales.min() <= 0:
             return 0.0
         if self._gram_pair != (a, b):
