@@ -54,7 +54,9 @@ BARS = [
 
 def figures() -> dict[str, Figure]:
     return {
-        "curves": sample_efficiency_figure(CURVES, "hexa: sample efficiency"),
+        "curves": sample_efficiency_figure({"hexa: sample efficiency": CURVES}),
+        # two datasets' panels sharing one entry: the legend has each entry once
+        "panels": sample_efficiency_figure({"small": CURVES[:2], "paper": CURVES[1:]}),
         "bars": bars_figure(BARS, ["iid", "unseen-heading"], "closed-loop score", "t", 1.0),
         "asymmetry": asymmetry_figure(CURVES, ([0.0, 0.1], [1e-3, 0.05]), "hexa: asymmetry"),
     }
@@ -79,7 +81,7 @@ def legend_on_axes(fig: Figure) -> list[bool]:
     ]
 
 
-@pytest.mark.parametrize("kind", ["curves", "bars", "asymmetry"])
+@pytest.mark.parametrize("kind", ["curves", "panels", "bars", "asymmetry"])
 def test_the_legend_sits_beside_the_axes(kind):
     fig = figures()[kind]
     assert legend_on_axes(fig) == [False]
@@ -141,7 +143,7 @@ def test_a_log_axis_puts_each_value_at_its_power_of_ten():
     assert minors == [y for y in expected if low <= y <= high]
     assert not any(t.get_text() for t in ax.get_yticklabels(minor=True))
     narrow = Series("sdnn", "sdnn (acc, torch)", {0.5: spread(0.04), 1.0: spread(0.03)})
-    ax = sample_efficiency_figure([narrow], "t").axes[0]
+    ax = sample_efficiency_figure({"t": [narrow]}).axes[0]
     assert not ax.get_yticklabels()  # no power of ten in view: every minor tick named
     named = [t.get_text() for t in ax.get_yticklabels(minor=True)]
     assert named == ["$\\mathdefault{3\\times10^{-2}}$", "$\\mathdefault{4\\times10^{-2}}$"]

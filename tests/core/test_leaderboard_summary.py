@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from symbench.core.board.leaderboard import aggregate, load_records
-from symbench.core.board.series import sample_efficiency_series
+from symbench.core.board.series import sample_efficiency_panels, sample_efficiency_series
 from symbench.core.board.summary import headline
 from symbench.core.runs.results import write_record
 
@@ -61,6 +61,35 @@ def test_sample_efficiency_curve_ends_with_iid_at_one(tmp_path, make_record):
     assert (curve.model, curve.label) == ("sdnn", "sdnn (acc, torch)")
     assert list(curve.points) == [0.25, 1.0]
     assert [s.mean for s in curve.points.values()] == pytest.approx([0.4, 0.1])
+
+
+def test_each_dataset_has_its_own_sample_efficiency_panel(tmp_path, make_record):
+    """A fraction of one dataset is not the same number of climbs as that of another, nor
+    are its test climbs the same: two datasets of a robot are never drawn on one axes."""
+    runs = [
+        dict(model="sdnn", split=split, seed=s, rmse=r)
+        for split, r in (("fraction-0.25", 0.4), ("iid", 0.1))
+        for s in range(3)
+    ]
+    write_runs(tmp_path, make_record, runs)
+    for i, (split, rmse) in enumerate((("fraction-0.5", 0.2), ("iid", 0.05)) * 3):
+        record = make_record(split=split, seed=i // 2, rmse=rmse, content_hash="ef" * 32)
+        record["dataset"]["id"] = "hexa-climb-small-v7"
+        write_record(record, tmp_path / f"small{i}.json")
+    table = aggregate(load_records(tmp_path))
+    panels = sample_efficiency_panels(table, "hexa")
+    protocol = table.protocol.iloc[0]
+    assert list(panels) == [
+        f"hexa-climb-small-v7, {protocol} protocol",
+        f"hexa-climb-smoke-v7, {protocol} protocol",
+    ]
+    (small,), (smoke,) = panels.values()
+    assert small.label == smoke.label == "sdnn (acc, torch)"  # the panel names the dataset
+    assert list(small.points) == [0.5, 1.0] and list(smoke.points) == [0.25, 1.0]
+    assert [s.mean for s in small.points.values()] == pytest.approx([0.2, 0.05])
+    # one dataset: the robot's title, as before
+    one = table[table.dataset == "hexa-climb-smoke-v7"]
+    assert list(sample_efficiency_panels(one, "hexa")) == ["hexa: sample efficiency"]
 
 
 def test_closed_loop_section_prefers_the_continuous_tracking_score(tmp_path, make_record):

@@ -33,7 +33,7 @@ from symbench.core.board.claims import claims_markdown
 from symbench.core.board.cost import cost_section
 from symbench.core.board.plot_files import write_png
 from symbench.core.board.plots import asymmetry_figure, sample_efficiency_figure
-from symbench.core.board.series import asymmetry_series, sample_efficiency_series
+from symbench.core.board.series import asymmetry_series, sample_efficiency_panels
 from symbench.core.board.sizes import (
     by_size,
     default_size,
@@ -310,10 +310,10 @@ def write_tables(records: list[tuple[Path, RecordV1]], out: Path) -> list[Path]:
         md = out / f"{robot}.md"
         write_text_atomic(md, markdown(table, robot))
         written.append(md)
-        curves = sample_efficiency_series(plotted, robot)
-        if curves:
+        panels = sample_efficiency_panels(plotted, robot)
+        if panels:
             png = out / f"{robot}-sample-efficiency.png"
-            write_png(sample_efficiency_figure(curves, f"{robot}: sample efficiency"), png)
+            write_png(sample_efficiency_figure(panels), png)
             written.append(png)
     for base in sorted({split_variant(r)[0] for r in plotted.robot.unique()}):
         curves, data = asymmetry_series(plotted, base)

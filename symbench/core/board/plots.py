@@ -24,6 +24,7 @@ from symbench.core.board.plot_files import write_png
 from symbench.core.common import portable_math
 
 if TYPE_CHECKING:
+    from matplotlib.artist import Artist
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
@@ -169,10 +170,14 @@ def draw_bars(ax: Axes, series: Sequence[Series[str]], groups: Sequence[str]) ->
 
 
 def _finish(fig: Figure) -> Figure:
-    """Axes laid out to fill the figure, and the legend of the first axes' entries beside
-    them, right of the figure (the files are cropped to include it)."""
+    """Axes laid out to fill the figure, and one legend of every axes' entries (each label
+    once) beside them, right of the figure (the files are cropped to include it)."""
     fig.tight_layout()
-    handles, labels = fig.axes[0].get_legend_handles_labels()
+    entries: dict[str, Artist] = {}
+    for ax in fig.axes:
+        for handle, label in zip(*ax.get_legend_handles_labels(), strict=True):
+            entries.setdefault(label, handle)
+    handles, labels = list(entries.values()), list(entries)
     fig.legend(
         handles,
         labels,
@@ -184,16 +189,19 @@ def _finish(fig: Figure) -> Figure:
     return fig
 
 
-def sample_efficiency_figure(series: Sequence[Series[float]], title: str) -> Figure:
-    """Test RMSE against the fraction of training climbs, a line per series."""
-    fig, (ax,) = _figure(5.0)
-    draw_curves(ax, _logged_series(series))
-    ax.set(
-        xlabel="fraction of the training climbs (1: all, the iid split)",
-        ylabel=RMSE_LABEL,
-        title=title,
-    )
-    _log_axis(ax)
+def sample_efficiency_figure(panels: Mapping[str, Sequence[Series[float]]]) -> Figure:
+    """Test RMSE against the fraction of training climbs, one axes per title in `panels` (a
+    dataset: one dataset's fractions are not another's climbs, nor are its test climbs), a
+    line per series."""
+    fig, axes = _figure(5.0 * len(panels), axes=len(panels))
+    for ax, (title, series) in zip(axes, panels.items(), strict=True):
+        draw_curves(ax, _logged_series(series))
+        ax.set(
+            xlabel="fraction of the training climbs (1: all, the iid split)",
+            ylabel=RMSE_LABEL,
+            title=title,
+        )
+        _log_axis(ax)
     return _finish(fig)
 
 
@@ -253,4 +261,4 @@ def sample_efficiency_png(curves: Mapping[str, RunCurve], title: str, path: Path
         )
         for label, (fractions, values, _) in curves.items()
     ]
-    write_png(sample_efficiency_figure(series, title), path)
+    write_png(sample_efficiency_figure({title: series}), path)

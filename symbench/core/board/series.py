@@ -66,6 +66,27 @@ def sample_efficiency_series(table: pd.DataFrame, robot: str) -> list[Series[flo
     return [curve for curve in curves if len(curve.points) > 1]
 
 
+def sample_efficiency_panels(table: pd.DataFrame, robot: str) -> dict[str, list[Series[float]]]:
+    """`sample_efficiency_series` per dataset of `robot` that has a curve, by panel title:
+    one dataset's fractions are not another's numbers of climbs, nor its test climbs the
+    other's, so two datasets never share an axis. Where the robot has records on several
+    datasets, each title names its dataset (and protocol, when it has one)."""
+    rows = table[table.robot == robot]
+    datasets = sorted(rows.dataset.unique())
+    panels = {}
+    for dataset in datasets:
+        part = rows[rows.dataset == dataset]
+        series = sample_efficiency_series(part, robot)
+        if not series:
+            continue
+        protocols = part.protocol.unique()
+        title = f"{robot}: sample efficiency"
+        if len(datasets) > 1:
+            title = dataset + (f", {protocols[0]} protocol" if len(protocols) == 1 else "")
+        panels[title] = series
+    return panels
+
+
 def asymmetry_series(
     table: pd.DataFrame, base: str
 ) -> tuple[list[Series[float]], tuple[list[float], list[float]] | None]:

@@ -52,7 +52,7 @@ def _sample_efficiency(rows: pd.DataFrame, robot: str, dataset: str, site: Path)
     if not series:
         return Plot(title, None, "No plot: no record of a fraction-F split on this dataset.")
     path = names.plot_file(robot, dataset, "sample-efficiency")
-    write_svg(sample_efficiency_figure(series, f"{robot}: sample efficiency"), site / path)
+    write_svg(sample_efficiency_figure({f"{robot}: sample efficiency": series}), site / path)
     fractions = sorted({x for s in series for x in s.points})
     result = ranking(series, fractions, "fraction", "lowest error", "highest error", True)
     return Plot(
