@@ -18,6 +18,7 @@ from stand_ins import (
     without_open_loop,
 )
 
+import symbench
 from symbench.core.common.errors import SymbenchError, UnknownNameError
 from symbench.core.config.cli import SECTIONS, _cell
 from symbench.core.config.datasets import ClimbDistribution, ScenarioGrid
@@ -387,7 +388,7 @@ def test_sample_efficiency_trains_on_the_presets_fractions(monkeypatch, tmp_path
         asked.append(split)
         return trained_on_split(split, variant)
 
-    monkeypatch.setattr(sample_efficiency, "sample_efficiency_png", lambda *args: None)
+    monkeypatch.setattr(symbench, "sample_efficiency_png", lambda *args: None)
     dataset = SimpleNamespace(spec=SimpleNamespace(name="hexa"), id="hexa-climb-small-v6")
     context = _context(PRESETS["small"], dataset, retrain=retrain)
     context.output_dir = tmp_path

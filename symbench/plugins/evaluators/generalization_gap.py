@@ -12,9 +12,10 @@ it reports nothing and says so.
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from symbench import EvaluationContext, control_of
+if TYPE_CHECKING:  # symbench's names load the data stack: when a run evaluates, not with the CLI
+    from symbench import EvaluationContext
 from symbench.plugins.evaluators.torque_error import split_metrics
 
 NAME = "generalization-gap"
@@ -26,11 +27,15 @@ DESCRIPTION = (
 
 def trainings(context: EvaluationContext) -> list[tuple[str | None, str, str]]:
     """The control split, for a run to train ahead."""
+    from symbench import control_of
+
     control = control_of(context.split)
     return [] if control is None else [(None, control, context.entry.variant)]
 
 
 def evaluate(context: EvaluationContext) -> dict[str, Any]:
+    from symbench import control_of
+
     control = control_of(context.split)
     if control is None:
         return {"skipped": f"split {context.split} has no size-matched control"}

@@ -11,9 +11,10 @@ rotated image of a training climb for an equivariant model; on v7 none should be
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from symbench import EvaluationContext
+if TYPE_CHECKING:  # symbench's names load the data stack: when a run evaluates, not with the CLI
+    from symbench import EvaluationContext
 
 NAME = "image-overlap"
 DESCRIPTION = (

@@ -2,7 +2,10 @@
 
 from __future__ import annotations
 
-from symbench import EvaluationContext, sample_efficiency_png
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:  # symbench's names load the data stack: when a run evaluates, not with the CLI
+    from symbench import EvaluationContext
 from symbench.plugins.evaluators.torque_error import split_metrics
 
 NAME = "sample-efficiency"
@@ -22,6 +25,8 @@ def trainings(context: EvaluationContext) -> list[tuple[str | None, str, str]]:
 
 
 def evaluate(context: EvaluationContext) -> dict:
+    from symbench import sample_efficiency_png
+
     fractions = [str(f) for f in context.preset.sample_efficiency.fractions] + ["1.0"]
     curve = {
         f: split_metrics(context.on_split(split))["rmse"]

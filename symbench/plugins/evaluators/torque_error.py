@@ -2,15 +2,20 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 
-from symbench import EvaluationContext, TrainedOnSplit, rmse, schema
+if TYPE_CHECKING:  # symbench's names load the data stack: when a run evaluates, not with the CLI
+    from symbench import EvaluationContext, TrainedOnSplit
 
 NAME = "torque-error"
 DESCRIPTION = "test torque RMSE (N m) overall and per joint type; NRMSE = RMSE / target std"
 
 
 def torque_metrics(pred: np.ndarray, target: np.ndarray) -> dict[str, float]:
+    from symbench import rmse, schema
+
     per_joint = rmse(pred, target, axis=(0, 1))
     overall = float(rmse(pred, target))
     return {
