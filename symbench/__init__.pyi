@@ -43,9 +43,8 @@ from .core.data.views import schema as schema
 from .core.runs.evaluation import (
     EvaluationContext as EvaluationContext,
     TrainedOnSplit as TrainedOnSplit,
-    rmse as rmse,
-    relative_error as relative_error,
 )
+from .core.common.fit_errors import rmse as rmse, relative_error as relative_error
 from .core.data.symmetry.raw_action import (
     act_on_raw as act_on_raw,
     rotate_scene_about_gravity as rotate_scene_about_gravity,

@@ -31,13 +31,13 @@ from typing import Any
 import numpy as np
 
 from symbench.core.common.errors import SymbenchError
+from symbench.core.common.fit_errors import relative_error
 from symbench.core.data.symmetry import raw_action
 from symbench.core.data.views import schema
 from symbench.core.data.views.frames import LegFrames
 from symbench.core.data.views.model_dims import dims_for
 from symbench.core.data.views.transforms import build_view
 from symbench.core.plugin.entries import ModelEntry
-from symbench.core.runs.evaluation import relative_error
 from symbench.core.symmetry.groups import GroupElement, LegGroup
 from symbench.core.training.backends import get_backend
 from symbench.core.training.normalization import Normalizer

@@ -36,6 +36,7 @@ from typing import Any
 
 import numpy as np
 
+from symbench.core.common.fit_errors import rmse
 from symbench.core.common.version import __version__
 from symbench.core.config.presets import ClosedLoop
 from symbench.core.data.views.transforms import build_view
@@ -47,7 +48,6 @@ from symbench.core.runs.closed_loop_cache import (
     write_calibration,
 )
 from symbench.core.runs.control_policy import feedforward_policy
-from symbench.core.runs.evaluation import rmse
 from symbench.core.sim.scene.push import Push
 from symbench.core.sim.scene.scenario import Scenario
 from symbench.core.sim.tracking.learned_control import (
