@@ -189,19 +189,20 @@ def _finish(fig: Figure) -> Figure:
     return fig
 
 
+def _rmse_curves(ax: Axes, series: Sequence[Series[float]], xlabel: str, title: str) -> None:
+    """Test RMSE against `xlabel`, a line per series, on a log axis."""
+    draw_curves(ax, _logged_series(series))
+    ax.set(xlabel=xlabel, ylabel=RMSE_LABEL, title=title)
+    _log_axis(ax)
+
+
 def sample_efficiency_figure(panels: Mapping[str, Sequence[Series[float]]]) -> Figure:
     """Test RMSE against the fraction of training climbs, one axes per title in `panels` (a
     dataset: one dataset's fractions are not another's climbs, nor are its test climbs), a
     line per series."""
     fig, axes = _figure(5.0 * len(panels), axes=len(panels))
     for ax, (title, series) in zip(axes, panels.items(), strict=True):
-        draw_curves(ax, _logged_series(series))
-        ax.set(
-            xlabel="fraction of the training climbs (1: all, the iid split)",
-            ylabel=RMSE_LABEL,
-            title=title,
-        )
-        _log_axis(ax)
+        _rmse_curves(ax, series, "fraction of the training climbs (1: all, the iid split)", title)
     return _finish(fig)
 
 
@@ -214,13 +215,7 @@ def asymmetry_figure(
     datasets' own torque asymmetry (relative error between rotated image climbs, one value
     per dataset), both on log scales."""
     fig, (left, right) = _figure(9.0, axes=2)
-    draw_curves(left, _logged_series(series))
-    left.set(
-        xlabel="asymmetry A (leg 0 is 1 + A times as heavy)",
-        ylabel=RMSE_LABEL,
-        title=title,
-    )
-    _log_axis(left)
+    _rmse_curves(left, series, "asymmetry A (leg 0 is 1 + A times as heavy)", title)
     if data_asymmetry is not None:
         x, asymmetry = data_asymmetry
         right.plot(x, [_log10(a) for a in asymmetry], marker="s", color="grey")

@@ -8,10 +8,11 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-if TYPE_CHECKING:  # symbench's names load the data stack: when a run evaluates, not with the CLI
-    from symbench import EvaluationContext
 from symbench import SymbenchError
 from symbench.plugins.evaluators.torque_error import split_metrics
+
+if TYPE_CHECKING:  # symbench's names load the data stack: when a run evaluates, not with the CLI
+    from symbench import EvaluationContext
 
 NAME = "generalization"
 DESCRIPTION = (

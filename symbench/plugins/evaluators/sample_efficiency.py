@@ -4,9 +4,10 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from symbench.plugins.evaluators.torque_error import split_metrics
+
 if TYPE_CHECKING:  # symbench's names load the data stack: when a run evaluates, not with the CLI
     from symbench import EvaluationContext
-from symbench.plugins.evaluators.torque_error import split_metrics
 
 NAME = "sample-efficiency"
 DESCRIPTION = (
