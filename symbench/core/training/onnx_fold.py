@@ -16,7 +16,7 @@ import onnx
 from onnx import numpy_helper
 
 
-class _Graph:
+class GraphIndex:
     """The graph's nodes by what they produce and consume, and its constant tensors."""
 
     def __init__(self, model: onnx.ModelProto) -> None:
@@ -64,14 +64,14 @@ class _Graph:
 
 def fold_normalization(model: onnx.ModelProto) -> int:
     """Fold in place what `model` allows; returns the number of normalizations folded."""
-    graph = _Graph(model)
+    graph = GraphIndex(model)
     folded = sum(_fold_input(graph, value.name) for value in model.graph.input)
     folded += sum(_fold_output(graph, value.name) for value in model.graph.output)
     graph.drop_unused()
     return folded
 
 
-def _fold_input(graph: _Graph, name: str) -> bool:
+def _fold_input(graph: GraphIndex, name: str) -> bool:
     sub = graph.only_consumer(name, "Sub")
     div = None if sub is None else graph.only_consumer(sub.output[0], "Div")
     if sub is None or div is None or sub.input[0] != name or div.input[0] != sub.output[0]:
@@ -101,7 +101,7 @@ def _fold_input(graph: _Graph, name: str) -> bool:
     return True
 
 
-def _fold_output(graph: _Graph, name: str) -> bool:
+def _fold_output(graph: GraphIndex, name: str) -> bool:
     shift = graph.producer.get(name)
     scale = _producer_of_variable(graph, shift, "Add")
     add = _producer_of_variable(graph, scale, "Mul")
@@ -128,7 +128,7 @@ def _fold_output(graph: _Graph, name: str) -> bool:
 
 
 def _producer_of_variable(
-    graph: _Graph, node: onnx.NodeProto | None, op: str
+    graph: GraphIndex, node: onnx.NodeProto | None, op: str
 ) -> onnx.NodeProto | None:
     """The node that makes `node`'s variable input, when `node` is an `op` of a variable and
     a constant."""
