@@ -62,6 +62,28 @@ def test_the_export_predicts_the_models_torques_at_any_batch_size(name, tmp_path
         np.testing.assert_allclose(predict(inputs), expected, rtol=1e-4, atol=1e-5)
 
 
+@pytest.mark.parametrize("name", MODELS)
+def test_a_batch_1_export_predicts_the_models_torques(name, tmp_path):
+    """A control loop's file (`--batch 1`), rewritten on rows where its graph allows: the
+    model's torques all the same."""
+    model = trained(name)
+    write_onnx(model, tmp_path / "model.onnx", batch=1)
+    predict = onnx_predictor((tmp_path / "model.onnx").read_bytes(), model.dims.keys)
+    inputs = parity_inputs(model, 5)
+    for row in range(5):
+        one = {k: v[row : row + 1] for k, v in inputs.items()}
+        np.testing.assert_allclose(predict(one), model.predict(one), rtol=1e-4, atol=1e-5)
+
+
+def test_sdnns_batch_1_export_computes_on_rows():
+    model = trained("sdnn")
+    exported = onnx.load_from_string(
+        onnx_bytes(model.entry, model.dims, {}, model.params, model.normalizer, batch=1)
+    )
+    ops = [node.op_type for node in exported.graph.node]
+    assert ops[0] == ops[-1] == "Reshape" and ops.count("Reshape") == 2, ops
+
+
 def test_sdnn_is_exported_with_its_normalization_folded_into_its_layers():
     model = trained("sdnn")
     exported = onnx.load_from_string(
