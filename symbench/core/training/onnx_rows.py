@@ -44,9 +44,8 @@ def rows_first(model: onnx.ModelProto) -> bool:
     _sort(model.graph)
     del model.graph.value_info[:]  # shapes changed: ONNX Runtime infers them again
     used = {name for node in model.graph.node for name in node.input}
-    graph.remove(
-        *(n for n in model.graph.node if n.op_type == "Constant" and n.output[0] not in used)
-    )
+    unused = [n for n in model.graph.node if n.op_type == "Constant" and n.output[0] not in used]
+    graph.remove(*unused)
     graph.drop_unused()
     return True
 
