@@ -14,7 +14,7 @@ from symbench.core.board.gap import HELD_OUT_SPLITS, generalization_gaps
 from symbench.core.board.leaderboard import COLUMNS
 from symbench.core.board.plot_files import write_svg
 from symbench.core.board.plots import bars_figure, sample_efficiency_figure
-from symbench.core.board.series import sample_efficiency_series, split_bars
+from symbench.core.board.series import sample_efficiency_panels, split_bars
 from symbench.core.board.site import names
 from symbench.core.board.site.alt_text import ranking
 
@@ -48,11 +48,12 @@ def draw_plots(rows: pd.DataFrame, robot: str, dataset: str, site: Path) -> tupl
 
 def _sample_efficiency(rows: pd.DataFrame, robot: str, dataset: str, site: Path) -> Plot:
     title = "Sample efficiency"
-    series = sample_efficiency_series(rows, robot)
-    if not series:
+    panels = sample_efficiency_panels(rows, robot)  # one: the page's rows are one dataset's
+    if not panels:
         return Plot(title, None, "No plot: no record of a fraction-F split on this dataset.")
     path = names.plot_file(robot, dataset, "sample-efficiency")
-    write_svg(sample_efficiency_figure({f"{robot}: sample efficiency": series}), site / path)
+    write_svg(sample_efficiency_figure(panels), site / path)
+    (series,) = panels.values()
     fractions = sorted({x for s in series for x in s.points})
     result = ranking(series, fractions, "fraction", "lowest error", "highest error", True)
     return Plot(
