@@ -39,6 +39,8 @@ def test_every_model_on_every_robot_writes_a_valid_record(smoke_home, tmp_path, 
     assert read_record(spec.record_path) == record
     assert record.dataset.id == dataset_id(robot, "smoke")
     assert record.samples.train > 0 and record.samples.test > 0
+    assert {f"evaluation_s[{name}]" for name in EVALUATORS} < set(record.timings_s)
+    assert record.timings_s["cpu_s"] > 0
     assert record.model.parameters > 0
     metrics = record.metrics
     assert metrics["torque-error"]["rmse"] > 0
@@ -149,6 +151,10 @@ def test_timings_count_each_second_once(smoke_home, tmp_path):
     timings = record.timings_s
     assert timings["retraining_s"] > 0 and timings["evaluation_s"] >= 0
     assert record.training.stopped_early == (record.training.epochs < 2)
+    # each evaluator's own seconds, without the three trainings generalization asked for
+    own = timings["evaluation_s[torque-error]"] + timings["evaluation_s[generalization]"]
+    assert 0 < own <= timings["evaluation_s"] + 1e-6
+    assert timings["cpu_s"] > 0
 
 
 def sha256_of(data: bytes) -> str:

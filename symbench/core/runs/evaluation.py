@@ -27,6 +27,7 @@ from symbench.core.config.presets import RECORD_PERIOD, Preset, dataset_id, pars
 from symbench.core.data.storage.scenario_fields import SCENARIO_KEYS
 from symbench.core.plugin.entries import EvaluatorEntry, ModelEntry
 from symbench.core.plugin.registry import evaluator
+from symbench.core.runs.timing import RETRAINING_KEY, Timer, evaluator_key
 
 if TYPE_CHECKING:  # the data layer's types, for annotations only
     from symbench.core.data.dataset import Dataset
@@ -219,10 +220,13 @@ def run_evaluators(
     names: list[str],
     context: EvaluationContext,
     progress: Callable[[str], None] = lambda name: None,
+    timer: Timer | None = None,
 ) -> dict[str, dict[str, Any]]:
     """Each evaluator's metrics; one whose needs the dataset does not meet is skipped
     (`{"skipped": reason}`); one that raises, or returns anything but a JSON-ready mapping
-    of metric names, is named in the error."""
+    of metric names, is named in the error. With `timer`, each evaluator's own wall
+    seconds, less the retrainings it asked for, go under `timing.evaluator_key`."""
+    timer = timer or Timer()
     results: dict[str, dict[str, Any]] = {}
     for name in names:
         entry = evaluator(name)
@@ -232,7 +236,9 @@ def run_evaluators(
             continue
         progress(name)
         try:
-            metrics = entry.evaluate(context)
+            metrics = timer.measure(
+                evaluator_key(name), entry.evaluate, context, less=RETRAINING_KEY
+            )
         except SymbenchError:
             raise
         except Exception as exc:

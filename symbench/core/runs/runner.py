@@ -42,7 +42,8 @@ from symbench.core.runs.results import (
 )
 from symbench.core.runs.run_config import check_names, recorded_config, train_config
 from symbench.core.runs.spec import RunSpec, checkpoint_root, ensure_dataset, model_entry
-from symbench.core.runs.trainings import RunTrainings, Sets, Timer
+from symbench.core.runs.timing import CPU_KEY, Timer, cpu_seconds
+from symbench.core.runs.trainings import RunTrainings, Sets
 from symbench.core.training.kernels import training_kernels
 from symbench.core.training.loop import batches_per_epoch
 from symbench.core.training.resume import BEST_DIR
@@ -62,7 +63,7 @@ def run(spec: RunSpec, on_stage: Callable[[str], None] = _quiet) -> ResultRecord
     writable_folder(spec.output, "output folder")
     check_replaceable(spec)  # before any minute is spent
     entry = model_entry(spec)
-    timer = Timer()
+    timer, cpu_at_start = Timer(), cpu_seconds()
     on_stage("dataset")
     dataset = timer.measure("dataset_s", ensure_dataset, spec)
     check_replaceable(spec, dataset.content_hash)
@@ -80,8 +81,10 @@ def run(spec: RunSpec, on_stage: Callable[[str], None] = _quiet) -> ResultRecord
         list(spec.evaluators),
         context,
         lambda name: on_stage(f"evaluating {name}"),
+        timer,
     )
     trainings.settle_timings()
+    timer.add(CPU_KEY, cpu_seconds() - cpu_at_start)
     record = record_body(spec, dataset, sets, model, metrics, timer.timings)
     if record.key() != spec.key():
         raise SymbenchError(f"internal: record key {record.key()} != run key {spec.key()}")

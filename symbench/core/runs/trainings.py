@@ -7,7 +7,7 @@ from __future__ import annotations
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
-from typing import Any, TypeVar
+from typing import Any
 
 import numpy as np
 from filelock import FileLock
@@ -20,28 +20,11 @@ from symbench.core.data.splits import SplitIndices
 from symbench.core.runs.evaluation import TrainedOnSplit
 from symbench.core.runs.run_config import train_config
 from symbench.core.runs.spec import RunSpec, checkpoint_root, ensure_dataset, model_entry
+from symbench.core.runs.timing import RETRAINING_KEY, Timer
 from symbench.core.training.loop import train
 from symbench.core.training.trained_model import TrainedModel
 
-T = TypeVar("T")
 Sets = tuple[ViewArrays, ViewArrays, ViewArrays]  # (train, val, test) samples of a split
-
-
-@dataclass
-class Timer:
-    """Seconds per stage of a run, summed over the calls measured under one name."""
-
-    timings: dict[str, float] = field(default_factory=dict)
-
-    def measure(self, name: str, fn: Callable[..., T], *args: Any, **kwargs: Any) -> T:
-        start = time.perf_counter()
-        try:
-            return fn(*args, **kwargs)
-        finally:
-            self.add(name, time.perf_counter() - start)
-
-    def add(self, name: str, seconds: float) -> None:
-        self.timings[name] = self.timings.get(name, 0.0) + seconds
 
 
 @dataclass(frozen=True)
@@ -205,7 +188,7 @@ class RunTrainings:
         # the data and the training, both inside the evaluation's time like any retraining
         job = TrainingJob(did, split, variant)
         self.announce(job)
-        other, _, sets, data = self.timer.measure("retraining_s", fit, self.spec, self.dataset, job)
+        other, _, sets, data = self.timer.measure(RETRAINING_KEY, fit, self.spec, self.dataset, job)
         made = provenance(other, data, job, self.spec.seed)
         return TrainedOnSplit(split, variant, other.predict, sets[2], made)
 
@@ -214,6 +197,6 @@ class RunTrainings:
         training made ahead counts its own time, wherever it ran (the parallel stage's wall
         time is trained_ahead_wall_s)."""
         timings = self.timer.timings
-        timings["evaluation_s"] -= timings.get("retraining_s", 0.0)
+        timings["evaluation_s"] -= timings.get(RETRAINING_KEY, 0.0)
         for job, seconds in self.ahead.items():
-            self.timer.add("training_s" if job == self.jobs[0] else "retraining_s", seconds)
+            self.timer.add("training_s" if job == self.jobs[0] else RETRAINING_KEY, seconds)
