@@ -93,6 +93,12 @@ def test_cli_prints_a_table_and_writes_the_record(smoke_home, tmp_path):
     ]
     assert ["torque-error", "rmse", f"{record.metrics['torque-error']['rmse']:.4g}"] in rows
     assert "".join(written.split()) == str(path)  # the path, wrapped at the terminal's width
+    # where the time went, under the table: the stages, the evaluator's own, the CPU
+    timings = record.timings_s
+    said = " ".join(table.split("time:")[1].split())
+    assert said.startswith(f"dataset {timings['dataset_s']:.0f} s, training ")
+    own = timings["evaluation_s[torque-error]"]
+    assert f"(torque-error {own:.0f} s); CPU {timings['cpu_s']:.0f} s" in said
 
 
 def test_names_are_checked_before_any_work(tmp_path):

@@ -19,9 +19,7 @@ import pandas as pd
 
 from symbench.core.board.summary import model_labels
 from symbench.core.runs.results import RecordV1
-from symbench.core.runs.timing import CPU_KEY, evaluator_of
-
-PARTS = ("dataset_s", "training_s", "retraining_s", "evaluation_s")
+from symbench.core.runs.timing import CPU_KEY, STAGES, evaluator_of
 
 
 def _hours(seconds: float) -> str:
@@ -41,7 +39,7 @@ def cost_section(records: list[tuple[Path, RecordV1]]) -> list[str]:
     for (_, record), label in zip(records, labels, strict=True):
         did = record.dataset.id
         runs[did] += 1
-        for part in PARTS:
+        for part in STAGES:
             seconds = float(record.timings_s.get(part, 0.0))
             by_dataset[did][part] += seconds
             by_model[did][label] += seconds
@@ -82,7 +80,7 @@ def _measured_section(records: list[RecordV1]) -> list[str]:
     for record in timed:
         row, timings = sums[record.dataset.id], record.timings_s
         row["runs"] += 1
-        row["wall"] += sum(float(timings.get(part, 0.0)) for part in PARTS)
+        row["wall"] += sum(float(timings.get(part, 0.0)) for part in STAGES)
         row["cpu"] += float(timings[CPU_KEY])
         row["evaluation"] += float(timings.get("evaluation_s", 0.0))
         for key, seconds in timings.items():

@@ -27,6 +27,7 @@ from symbench.core.runs.spec import (
     default_preset,
     resolve_robot,
 )
+from symbench.core.runs.timing import CPU_KEY, STAGES, evaluator_of
 
 
 @click.command("run")
@@ -73,6 +74,7 @@ def run(**options: Any) -> None:
     )
     record = run_spec(spec, on_stage=announce)
     console.print(metrics_table(record))
+    console.print(time_line(record.timings_s))
     console.print(f"result record: {spec.record_path}", soft_wrap=True)  # whole, to copy
 
 
@@ -94,6 +96,21 @@ def _spec(options: dict[str, Any]) -> RunSpec:
         else options["evaluators"],
     }
     return RunSpec(**spec_fields({**options, **resolved}))
+
+
+def time_line(timings: dict[str, float]) -> str:
+    """Where the run's time went: wall seconds per stage, each evaluator's own after the
+    evaluation's (longest first), and the CPU seconds of the whole run."""
+    own = sorted(
+        ((n, s) for k, s in timings.items() if (n := evaluator_of(k))), key=lambda x: -x[1]
+    )
+    parts = []
+    for key in (k for k in STAGES if k in timings):
+        parts.append(f"{key.removesuffix('_s')} {timings[key]:.0f} s")
+        if key == "evaluation_s" and own:
+            parts[-1] += " (" + ", ".join(f"{name} {sec:.0f} s" for name, sec in own) + ")"
+    cpu = f"; CPU {timings[CPU_KEY]:.0f} s" if CPU_KEY in timings else ""
+    return "time: " + ", ".join(parts) + cpu
 
 
 def metrics_table(record: ResultRecord) -> Table:
