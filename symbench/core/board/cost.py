@@ -47,9 +47,11 @@ def cost_section(records: list[tuple[Path, RecordV1]]) -> list[str]:
     lines = [
         "# What this board cost",
         "",
-        "Hours of wall time the records report, summed (a run trains and simulates on one "
-        "thread, so these are core-hours); a training that runs share counts once, where it "
-        "was made.",
+        "Hours of wall time the records report, summed; a training that runs share counts "
+        "once, where it was made. A run trains and simulates on one thread, so these are "
+        "core-hours where no more runs than cores shared the machine; a run beside other work, "
+        "or waiting for another run's training (counted as retraining), reports more than it "
+        "computed.",
         "",
         "| dataset | runs | training | retraining | evaluation | total | "
         + " | ".join(models)
