@@ -1,11 +1,12 @@
 """What a run spent, as its record's `timings_s` says: wall seconds per stage and per
 evaluator, and the CPU seconds of the whole run.
 
-Wall seconds alone overstate a run's cost whenever more runs than cores share the machine
-(a board's sweep ran three lanes on two cores: each run's wall time was half again what it
-computed) and understate it when a run trains ahead in worker processes; CPU seconds
-(user and system, of the run's process and of the worker processes it started and waited
-for) are the core-seconds it used, whatever shared the machine.
+Wall seconds alone overstate a run's cost whenever other work shares its core or it waits
+for another run's training (the v7 board's records of hexa's seed 0 sum to 3.76 hours for
+runs that took 1.94 CPU-hours on 2026-12-07, docs/concepts.md, Presets) and understate it
+when a run trains ahead in worker processes; CPU seconds (user and system, of the run's
+process and of the worker processes it started and waited for) are the core-seconds it
+used, whatever shared the machine.
 """
 
 from __future__ import annotations
