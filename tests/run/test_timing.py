@@ -6,6 +6,7 @@ from __future__ import annotations
 import multiprocessing
 import time
 
+from symbench.core.runs import timing
 from symbench.core.runs.timing import Timer, cpu_seconds, evaluator_key, evaluator_of
 
 BURN_S = 0.3
@@ -17,21 +18,35 @@ def _burn() -> None:
         pass
 
 
-def test_an_evaluator_is_timed_without_the_trainings_inside_it():
+class _Clock:
+    """A perf_counter that moves only when `sleep` is called: the test's seconds are exact."""
+
+    def __init__(self) -> None:
+        self.now = 0.0
+
+    def perf_counter(self) -> float:
+        return self.now
+
+    def sleep(self, seconds: float) -> None:
+        self.now += seconds
+
+
+def test_an_evaluator_is_timed_without_the_trainings_inside_it(monkeypatch):
+    clock = _Clock()
+    monkeypatch.setattr(timing, "time", clock)
     timer = Timer()
 
     def evaluate() -> str:
-        timer.measure("retraining_s", time.sleep, 0.2)
-        time.sleep(0.05)
+        timer.measure("retraining_s", clock.sleep, 2.0)
+        clock.sleep(0.5)
         return "metrics"
 
-    assert timer.measure(evaluator_key("generalization"), evaluate, less="retraining_s") == (
-        "metrics"
-    )
-    own = timer.timings["evaluation_s[generalization]"]
-    assert 0.04 < own < 0.15 and timer.timings["retraining_s"] >= 0.2
-    timer.measure("training_s", time.sleep, 0.05)  # without `less`, every second counts
-    assert timer.timings["training_s"] >= 0.05
+    name = evaluator_key("generalization")
+    assert timer.measure(name, evaluate, less="retraining_s") == "metrics"
+    assert timer.timings == {"retraining_s": 2.0, name: 0.5}
+    timer.measure("training_s", clock.sleep, 0.25)  # without `less`, every second counts
+    timer.measure(name, clock.sleep, 0.25, less="retraining_s")  # summed over calls
+    assert timer.timings == {"retraining_s": 2.0, name: 0.75, "training_s": 0.25}
 
 
 def test_evaluator_keys_name_their_evaluator_and_nothing_else():

@@ -219,14 +219,13 @@ def skip_reason(entry: EvaluatorEntry, dataset: Dataset) -> str | None:
 def run_evaluators(
     names: list[str],
     context: EvaluationContext,
+    timer: Timer,
     progress: Callable[[str], None] = lambda name: None,
-    timer: Timer | None = None,
 ) -> dict[str, dict[str, Any]]:
     """Each evaluator's metrics; one whose needs the dataset does not meet is skipped
     (`{"skipped": reason}`); one that raises, or returns anything but a JSON-ready mapping
-    of metric names, is named in the error. With `timer`, each evaluator's own wall
-    seconds, less the retrainings it asked for, go under `timing.evaluator_key`."""
-    timer = timer or Timer()
+    of metric names, is named in the error. Each evaluator's own wall seconds, less the
+    retrainings it asked for, go into `timer` under `timing.evaluator_key`."""
     results: dict[str, dict[str, Any]] = {}
     for name in names:
         entry = evaluator(name)

@@ -80,8 +80,8 @@ def run(spec: RunSpec, on_stage: Callable[[str], None] = _quiet) -> ResultRecord
         run_evaluators,
         list(spec.evaluators),
         context,
-        lambda name: on_stage(f"evaluating {name}"),
         timer,
+        lambda name: on_stage(f"evaluating {name}"),
     )
     trainings.settle_timings()
     timer.add(CPU_KEY, cpu_seconds() - cpu_at_start)

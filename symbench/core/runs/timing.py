@@ -19,9 +19,9 @@ from typing import Any, TypeVar
 
 T = TypeVar("T")
 
-STAGES = ("dataset_s", "training_s", "retraining_s", "evaluation_s")  # wall seconds, in order
-CPU_KEY = "cpu_s"  # the whole run's CPU seconds, worker processes included
 RETRAINING_KEY = "retraining_s"  # the trainings a run's evaluators asked for
+STAGES = ("dataset_s", "training_s", RETRAINING_KEY, "evaluation_s")  # wall seconds, in order
+CPU_KEY = "cpu_s"  # the whole run's CPU seconds, worker processes included
 _EVALUATOR = ("evaluation_s[", "]")  # an evaluator's key: its name between these
 
 
