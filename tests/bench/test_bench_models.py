@@ -16,7 +16,7 @@ from symbench.core.cli import build_cli
 from symbench.core.data.views.model_dims import dims_for
 from symbench.core.plugin import registry
 from symbench.core.training.backends.torch_backend import build_network
-from symbench.core.training.kernels import TORCH_PINS, XLA_PIN
+from symbench.core.training.kernels import TORCH_PINS, XLA_PIN, XLA_POOL
 
 BATCH = 8
 
@@ -61,12 +61,13 @@ def test_the_report_of_both_thread_settings():
 
 def _each_setting_ran_with_the_threads_it_states(settings):
     """One thread and every core this process may use (one setting on a single core), and
-    each child computed with exactly that many: torch's threads, XLA's pool threads."""
+    each child computed with that many cores: torch with as many threads, XLA with the pool
+    training runs (`kernels.XLA_POOL`), whose size shapes the step it compiles."""
     assert [s["threads"] for s in settings] == sorted({1, len(os.sched_getaffinity(0))})
     for setting in settings:
         n = setting["threads"]
         assert len(setting["cores"]) == n
-        assert setting["threads_used"] == {"torch": n, "jax": n}
+        assert setting["threads_used"] == {"torch": n, "jax": int(XLA_POOL["NPROC"])}
 
 
 def _every_share_divides_by_the_best_matmul_rate_of_its_setting(setting):
@@ -94,6 +95,7 @@ def _the_matmul_rates_are_those_of_the_training_kernels(setting):
     """The children run under the pins training runs under (this CPU has AVX2)."""
     pins = setting["kernel_pins"]
     assert {k: pins[k] for k in TORCH_PINS} == TORCH_PINS
+    assert {k: pins[k] for k in XLA_POOL} == XLA_POOL
     assert pins["torch_cpu_capability"] == "AVX2" and XLA_PIN in pins["XLA_FLAGS"]
 
 

@@ -30,7 +30,7 @@ from symbench.core.data.views.model_dims import dims_of
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import BACKENDS
 from symbench.core.training.backends import get_backend
-from symbench.core.training.kernels import TORCH_PINS
+from symbench.core.training.kernels import TORCH_PINS, XLA_POOL
 from symbench.core.training.normalization import Normalizer
 from symbench.core.training.onnx_export import onnx_bytes, onnx_predictor
 
@@ -171,8 +171,8 @@ def _timed(say: Say, prefix: str, started: float) -> Say:
 
 
 def _threads_used(backend: str) -> int:
-    """torch's intra-op threads; the threads of XLA's compute pool, which it sized by this
-    process's cores (counted after the matmul, so the pool exists)."""
+    """torch's intra-op threads; the threads of XLA's compute pool, pinned for training
+    (`kernels.XLA_POOL`; counted after the matmul, so the pool exists)."""
     if backend == "torch":
         import torch
 
@@ -185,7 +185,8 @@ def _kernel_pins() -> dict[str, str | None]:
     and the kernels torch's own loops run."""
     import torch
 
-    pins: dict[str, str | None] = {name: os.environ.get(name) for name in TORCH_PINS}
+    pinned = {**TORCH_PINS, **XLA_POOL}
+    pins: dict[str, str | None] = {name: os.environ.get(name) for name in pinned}
     pins["XLA_FLAGS"] = os.environ.get("XLA_FLAGS")
     pins["torch_cpu_capability"] = torch.backends.cpu.get_cpu_capability()
     return pins

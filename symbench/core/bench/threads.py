@@ -1,8 +1,9 @@
 """Thread settings of `symbench bench models`: how many cores one measurement gets.
 
 A thread count is only honest as a count of cores: a process confined to n cores (its CPU
-affinity, by which XLA sizes its thread pool) and telling torch to use n threads computes
-with n cores, however many threads its libraries start. Both libraries size their pools
+affinity) and telling torch to use n threads computes with n cores, however many threads its
+libraries start. XLA keeps the pool size symbench pins for training (`kernels.XLA_POOL`), so
+a setting measures the very step training compiles, on its n cores. Both libraries size their pools
 once, when they load, so a process is confined before it imports either.
 """
 
@@ -60,7 +61,8 @@ class ThreadCounts(click.ParamType):
 
 def confine(count: int) -> list[int]:
     """Run this process and every thread it starts from now on on its first `count` cores,
-    torch with `count` intra-op threads (read by the torch backend when it loads); the cores."""
+    torch with `count` intra-op threads (read by the torch backend when it loads) and XLA with
+    its pinned pool; the cores."""
     loaded = sorted({"torch", "jax"} & set(sys.modules))
     if loaded:
         raise RuntimeError(f"{' and '.join(loaded)} loaded before the thread setting was made")

@@ -21,7 +21,11 @@ record. The pins below cap every library at AVX2 where the library lets them:
 - JAX: `--xla_cpu_max_isa=AVX2` caps the code XLA compiles, but not its matrix-product
   library, which runs the host's widest vector unit (measured: 165 GFLOP/s on one AVX-512
   core with the cap, above AVX2's peak). JAX training reproduces across CPUs with the same
-  vector width.
+  vector width. XLA also compiles a step by the size of its CPU thread pool, which it takes
+  from `NPROC` or else from the cores the process may use: with one thread it splits no
+  loop across threads and fuses differently, and hexa's sdnn and gnn trained to other
+  numbers on one core than on two (2, 3, 4 and 16 threads: the same as 2). `NPROC` is pinned
+  at 2 (XLA_POOL), what the board's JAX records were trained with on 2-core machines.
 
 `training_kernels` names the class of this process for a backend; the runner stores it in the
 record's `hardware`, and `verify` warns when a record was trained in another class, where
@@ -45,6 +49,7 @@ TORCH_PINS = {
     "ONEDNN_MAX_CPU_ISA": "AVX2",
 }
 XLA_PIN = "--xla_cpu_max_isa=AVX2"
+XLA_POOL = {"NPROC": "2"}  # the threads of XLA's CPU pool, which shape its compiled steps
 
 
 # MKL's reproducibility branches (mkl_cbwr.h), as `mkl_serv_cbwr_get` reports them
@@ -122,8 +127,10 @@ def training_kernels(backend: str) -> str:
 
 
 def pin_training_kernels() -> None:
-    """Set the pins for libraries not loaded yet (never on a CPU without AVX2: an AVX2 cap
-    there would select instructions it cannot run)."""
+    """Set the pins for libraries not loaded yet (the instruction caps never on a CPU without
+    AVX2: an AVX2 cap there would select instructions it cannot run)."""
+    if "jax" not in sys.modules:
+        os.environ.update(XLA_POOL)
     if not _cpu_has_avx2():
         return
     if "torch" not in sys.modules:
@@ -138,7 +145,7 @@ def training_kernel_problems() -> list[str]:
         return ["this CPU has no AVX2, so torch runs other kernels than the reference"]
     problems = [
         f"{name} is {os.environ.get(name)!r}, not {value!r}"
-        for name, value in TORCH_PINS.items()
+        for name, value in {**TORCH_PINS, **XLA_POOL}.items()
         if os.environ.get(name) != value
     ]
     if "torch" in sys.modules:
