@@ -1,8 +1,9 @@
 """One thread setting of `symbench bench models`, measured in a process of its own.
 
-Torch and XLA size their thread pools once, when they load, so one process cannot measure
-two settings: the command runs `python -m symbench.core.bench.models_worker JOB OUT` per
-setting, which confines itself to its cores before importing either (see `threads`),
+Torch sizes its thread pool once, when it loads, and XLA starts its pool's threads on the
+cores the process has then, so one process cannot measure two settings: the command runs
+`python -m symbench.core.bench.models_worker JOB OUT` per setting, which confines itself to
+its cores before importing either (see `threads`),
 measures (see `model_rates`) and writes the setting's figures to OUT as JSON. Its progress
 and anything it prints come back line by line through one pipe, so nothing it prints can
 mix into the command's own output.
