@@ -1,6 +1,7 @@
-"""JAX training gives the same numbers on every core count: XLA compiles a training step by
-the size of its CPU thread pool (one thread: no loop split across threads, other fusions),
-so symbench pins the pool (`kernels.XLA_POOL`) whatever the machine or the caller says."""
+"""Training gives the same numbers on every core count. XLA compiles a training step by the
+size of its CPU thread pool (one thread: no loop split across threads, other fusions), so
+symbench pins the pool (`kernels.XLA_POOL`) whatever the machine or the caller says; torch
+trains on one thread (the torch backend's default)."""
 
 from __future__ import annotations
 
@@ -10,8 +11,8 @@ import sys
 
 from symbench.core.training.kernels import XLA_POOL
 
-# trains hexa's sdnn in JAX for a few steps on synthetic data and prints its parameters'
-# digest and the size of XLA's pool; argv[1]: the cores to confine the process to, first
+# trains hexa's sdnn in the backend argv[2] for a few steps on synthetic data and prints its
+# parameters' digest and the size of XLA's pool; argv[1]: the cores to confine it to, first
 CHILD = """
 import hashlib, os, sys
 os.sched_setaffinity(0, [int(c) for c in sys.argv[1].split(",")])
@@ -23,11 +24,12 @@ from symbench.core.plugin import registry
 from symbench.core.training.backends import get_backend
 from symbench.testing.synthetic import synthetic_views
 
-entry, backend = registry.model("sdnn", "jax"), get_backend("jax")
+entry, backend = registry.model("sdnn", sys.argv[2]), get_backend(sys.argv[2])
 data = synthetic_views(6, 256, seed=0)[entry.view]
 dims = dims_of(data)
 params = backend.init_params(entry, dims, {}, 0)
-trainer = backend.make_trainer(entry, dims, {}, params, entry.learning_rate, True)
+compiled = backend.default_compiled
+trainer = backend.make_trainer(entry, dims, {}, params, entry.learning_rate, compiled)
 trainer.set_data(data.inputs, data.target, data.inputs, data.target)
 for _ in range(2):
     trainer.train_epoch(np.arange(256).reshape(4, 64))
@@ -38,9 +40,9 @@ print(digest.hexdigest(), threads_named(XLA_POOL_THREAD))
 """
 
 
-def _trained(cores: list[int], env: dict[str, str]) -> tuple[str, int]:
+def _trained(backend: str, cores: list[int], env: dict[str, str]) -> tuple[str, int]:
     out = subprocess.run(
-        [sys.executable, "-c", CHILD, ",".join(map(str, cores))],
+        [sys.executable, "-c", CHILD, ",".join(map(str, cores)), backend],
         env=env,
         capture_output=True,
         text=True,
@@ -57,11 +59,18 @@ def test_jax_training_is_the_same_on_one_core_and_under_a_callers_thread_count()
     the pinned size and the parameters agree to the last bit."""
     cores = sorted(os.sched_getaffinity(0))
     env = {k: v for k, v in os.environ.items() if k != "NPROC"}
-    one_core = _trained(cores[:1], env)
-    told_four = _trained(cores, {**env, "NPROC": "4"})
+    one_core = _trained("jax", cores[:1], env)
+    told_four = _trained("jax", cores, {**env, "NPROC": "4"})
     pinned = int(XLA_POOL["NPROC"])
     assert one_core[1] == told_four[1] == pinned
     assert one_core[0] == told_four[0]
+
+
+def test_torch_training_is_the_same_on_one_core_and_on_every_core():
+    """Torch's one thread whatever the cores (more threads would split its sums)."""
+    cores = sorted(os.sched_getaffinity(0))
+    env = {k: v for k, v in os.environ.items() if k != "SYMBENCH_TORCH_THREADS"}
+    assert _trained("torch", cores[:1], env)[0] == _trained("torch", cores, env)[0]
 
 
 def test_a_pool_size_changed_after_import_is_named_as_a_problem(monkeypatch):
