@@ -40,17 +40,25 @@ print(digest.hexdigest(), threads_named(XLA_POOL_THREAD))
 """
 
 
-def _trained(backend: str, cores: list[int], env: dict[str, str]) -> tuple[str, int]:
-    out = subprocess.run(
-        [sys.executable, "-c", CHILD, ",".join(map(str, cores)), backend],
-        env=env,
-        capture_output=True,
-        text=True,
-        timeout=300,
-    )
-    assert out.returncode == 0, out.stderr
-    digest, pool = out.stdout.split()
-    return digest, int(pool)
+def _trained(backend: str, runs: list[tuple[list[int], dict[str, str]]]) -> list[tuple[str, int]]:
+    """(digest, XLA pool threads) of a child per (cores, environment), the children at once."""
+    children = [
+        subprocess.Popen(
+            [sys.executable, "-c", CHILD, ",".join(map(str, cores)), backend],
+            env=env,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.PIPE,
+            text=True,
+        )
+        for cores, env in runs
+    ]
+    results = []
+    for child in children:
+        out, err = child.communicate(timeout=300)
+        assert child.returncode == 0, err
+        digest, pool = out.split()
+        results.append((digest, int(pool)))
+    return results
 
 
 def test_jax_training_is_the_same_on_one_core_and_under_a_callers_thread_count():
@@ -59,8 +67,7 @@ def test_jax_training_is_the_same_on_one_core_and_under_a_callers_thread_count()
     the pinned size and the parameters agree to the last bit."""
     cores = sorted(os.sched_getaffinity(0))
     env = {k: v for k, v in os.environ.items() if k != "NPROC"}
-    one_core = _trained("jax", cores[:1], env)
-    told_four = _trained("jax", cores, {**env, "NPROC": "4"})
+    one_core, told_four = _trained("jax", [(cores[:1], env), (cores, {**env, "NPROC": "4"})])
     pinned = int(XLA_POOL["NPROC"])
     assert one_core[1] == told_four[1] == pinned
     assert one_core[0] == told_four[0]
@@ -70,7 +77,8 @@ def test_torch_training_is_the_same_on_one_core_and_on_every_core():
     """Torch's one thread whatever the cores (more threads would split its sums)."""
     cores = sorted(os.sched_getaffinity(0))
     env = {k: v for k, v in os.environ.items() if k != "SYMBENCH_TORCH_THREADS"}
-    assert _trained("torch", cores[:1], env)[0] == _trained("torch", cores, env)[0]
+    one_core, every_core = _trained("torch", [(cores[:1], env), (cores, env)])
+    assert one_core[0] == every_core[0]
 
 
 def test_a_pool_size_changed_after_import_is_named_as_a_problem(monkeypatch):

@@ -3,8 +3,8 @@
 A thread count is only honest as a count of cores: a process confined to n cores (its CPU
 affinity) and telling torch to use n threads computes with n cores, however many threads its
 libraries start. XLA keeps the pool size symbench pins for training (`kernels.XLA_POOL`), so
-a setting measures the very step training compiles, on its n cores. Both libraries size their pools
-once, when they load, so a process is confined before it imports either.
+a setting measures the very step training compiles, on its n cores. Both libraries start
+their pools once, when they load, so a process is confined before it imports either.
 """
 
 from __future__ import annotations
