@@ -74,10 +74,12 @@ def test_jax_training_is_the_same_on_one_core_and_under_a_callers_thread_count()
 
 
 def test_torch_training_is_the_same_on_one_core_and_on_every_core():
-    """Torch's one thread whatever the cores (more threads would split its sums)."""
+    """Torch's one thread whatever the cores or a caller's OpenMP and MKL settings say (more
+    threads would split its sums)."""
     cores = sorted(os.sched_getaffinity(0))
     env = {k: v for k, v in os.environ.items() if k != "SYMBENCH_TORCH_THREADS"}
-    one_core, every_core = _trained("torch", [(cores[:1], env), (cores, env)])
+    told_four = {**env, "OMP_NUM_THREADS": "4", "MKL_NUM_THREADS": "4"}
+    one_core, every_core = _trained("torch", [(cores[:1], env), (cores, told_four)])
     assert one_core[0] == every_core[0]
 
 

@@ -30,7 +30,7 @@ from symbench.core.data.views.model_dims import dims_of
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import BACKENDS
 from symbench.core.training.backends import get_backend
-from symbench.core.training.kernels import TORCH_PINS, XLA_POOL
+from symbench.core.training.kernels import ENV_PINS
 from symbench.core.training.normalization import Normalizer
 from symbench.core.training.onnx_export import onnx_bytes, onnx_predictor
 
@@ -185,8 +185,7 @@ def _kernel_pins() -> dict[str, str | None]:
     and the kernels torch's own loops run."""
     import torch
 
-    pinned = {**TORCH_PINS, **XLA_POOL}
-    pins: dict[str, str | None] = {name: os.environ.get(name) for name in pinned}
+    pins: dict[str, str | None] = {name: os.environ.get(name) for name in ENV_PINS}
     pins["XLA_FLAGS"] = os.environ.get("XLA_FLAGS")
     pins["torch_cpu_capability"] = torch.backends.cpu.get_cpu_capability()
     return pins

@@ -50,6 +50,7 @@ TORCH_PINS = {
 }
 XLA_PIN = "--xla_cpu_max_isa=AVX2"
 XLA_POOL = {"NPROC": "2"}  # the threads of XLA's CPU pool, which shape its compiled steps
+ENV_PINS = {**TORCH_PINS, **XLA_POOL}  # every pin set through an environment variable
 
 
 # MKL's reproducibility branches (mkl_cbwr.h), as `mkl_serv_cbwr_get` reports them
@@ -145,7 +146,7 @@ def training_kernel_problems() -> list[str]:
         return ["this CPU has no AVX2, so torch runs other kernels than the reference"]
     problems = [
         f"{name} is {os.environ.get(name)!r}, not {value!r}"
-        for name, value in {**TORCH_PINS, **XLA_POOL}.items()
+        for name, value in ENV_PINS.items()
         if os.environ.get(name) != value
     ]
     if "torch" in sys.modules:
