@@ -149,6 +149,19 @@ def test_an_npz_entry_that_is_no_array_is_refused_naming_it(home, tmp_path):
     )
 
 
+def test_an_npz_behind_other_bytes_is_refused_naming_it(home, tmp_path):
+    """zipfile opens a zip behind bytes of anything else, where np.load refuses the file: the
+    reader read such a cached reference whose digest had been rewritten to match (found by
+    the property suite: one byte put in front of a closed-loop reference)."""
+    folder = _write_log(tmp_path / "prefixed", fmt="npz")
+    path = folder / "run.npz"
+    path.write_bytes(b"P" + path.read_bytes())
+    result = CliRunner().invoke(build_cli(), ["data", "import", str(folder), "--id", "prefixed"])
+    assert error_line(result, 1) == (
+        f"Error: {path}: not a readable npz file without pickles (it does not begin as a zip file)"
+    )
+
+
 def test_a_parquet_column_name_that_is_no_utf8_is_refused_naming_the_file(home, tmp_path):
     """Before: "internal error: UnicodeDecodeError" (pyarrow decodes a name only when asked
     for it); found by the property suite's damaged files."""

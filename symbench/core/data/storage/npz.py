@@ -42,6 +42,9 @@ UNREADABLE = (
 # compressed bytes cannot hold them
 DEFLATE_RATIO = 1100
 EXPANDS = {zipfile.ZIP_STORED: 1, zipfile.ZIP_DEFLATED: DEFLATE_RATIO}  # np.savez's methods
+# how an npz begins, as np.load tells one: a zip's first entry, or an empty zip's directory
+# (zipfile alone also opens a zip behind bytes of anything else, which np.load refuses)
+ZIP_STARTS = (b"PK\x03\x04", b"PK\x05\x06")
 
 
 def read_npz(path: Path) -> dict[str, np.ndarray]:
@@ -50,6 +53,9 @@ def read_npz(path: Path) -> dict[str, np.ndarray]:
     holds, is a one-line error naming it."""
     arrays: dict[str, np.ndarray] = {}
     try:
+        with path.open("rb") as file:
+            if file.read(4) not in ZIP_STARTS:
+                raise ValueError("it does not begin as a zip file")
         with zipfile.ZipFile(path) as archive:
             for info in archive.infolist():
                 name = info.filename.removesuffix(".npy")
