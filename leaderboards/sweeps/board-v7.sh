@@ -6,8 +6,8 @@
 # copied into the worktree first. A run that
 # failed beside another (out of memory) runs again alone before the next phase starts.
 #
-#   leaderboards/sweeps/board-v7.sh [WORKTREE [PAPER_WORKTREE]]
-#       (defaults: ../wt-board7m and ../wt-paper7 beside the repo)
+#   leaderboards/sweeps/board-v7.sh [WORKTREE [PAPER_WORKTREE [JAX_WORKTREE]]]
+#       (defaults: ../wt-board7m, ../wt-paper7 and ../wt-jax7 beside the repo)
 set -uo pipefail
 
 REPO=$(cd "$(dirname "$0")/../.." && pwd)
@@ -22,6 +22,10 @@ WT=${1:-$(dirname "$REPO")/wt-board7m}
 # climb)
 PAPER_COMMIT=5dd2529
 PWT=${2:-$(dirname "$REPO")/wt-paper7}
+# the JAX entries from d5d5414 (2026-12-07): JAX model version 4 (predictions and validation
+# losses on 256 rows at a time), made again there; their torch twins are 2dd8a0d's
+JAX_COMMIT=d5d5414
+JWT=${3:-$(dirname "$REPO")/wt-jax7}
 PY=${PYTHON:-$REPO/.venv/bin/python}
 MODELS=sdnn,sdgnn,ffnn,ffnn-leg,gnn
 ALL=torque-error,equivariance,invariance,generalization,closed-loop,image-overlap,generalization-gap
@@ -36,10 +40,15 @@ worktree() {  # worktree FOLDER COMMIT: FOLDER checked out at COMMIT, clean, or 
 }
 worktree "$WT" "$COMMIT"
 worktree "$PWT" "$PAPER_COMMIT"
+worktree "$JWT" "$JAX_COMMIT"
 # published records back into the output folders whose sweeps made them, so that a fresh
 # worktree skips them
 home() {  # home OUTPUT[/SUBFOLDER]: the worktree whose sweeps write OUTPUT
-    case $1 in results-paper | results-paper/*) echo "$PWT" ;; *) echo "$WT" ;; esac
+    case $1 in
+        results-paper | results-paper/*) echo "$PWT" ;;
+        results-jax | results-jax/*) echo "$JWT" ;;
+        *) echo "$WT" ;;
+    esac
 }
 restore() {  # restore OUTPUT RECORDS...
     local out=$1 to; shift
