@@ -344,7 +344,8 @@ class JaxBackend:
                     y = np.asarray(run(*piece))
                     check_output(entry, dims, y.shape, len(piece[0]))
                     pieces.append(y[:rows])
-            return np.concatenate(pieces).astype(np.float64)
+            joined = pieces[0] if len(pieces) == 1 else np.concatenate(pieces)
+            return joined.astype(np.float64)
 
         return predict
 
