@@ -40,7 +40,7 @@ def test_a_row_comes_out_the_same_in_any_call_longer_than_a_piece(name, dtype, m
     """Every evaluator calls the predictor with its own number of rows (the test set, each
     group element's image of it, the closed loop's references): each row must not depend on
     that number, nor on the rows padding the last piece. Rows 0-39 are 2.5 pieces of a 40-row
-    call (the third padded with copies of row 39) and the first 40 rows of 80, 4 + 1 pieces."""
+    call (the third padded with copies of row 39) and the first 2.5 of an 80-row call's 5."""
     predict, view = _predictor(name, dtype, monkeypatch)
     short = predict({k: v[: 5 * PIECE // 2] for k, v in view.inputs.items()})
     long = predict(view.inputs)
@@ -52,12 +52,12 @@ def test_a_call_of_one_piece_or_less_runs_at_its_own_size(monkeypatch):
     """A control loop's batch-1 call is not padded to a piece (that would multiply its cost
     by PREDICT_ROWS); it predicts what the same row predicts in a batch, to rounding
     (tests/models/test_jax_few_rows.py), and a call of exactly one piece is one call."""
-    calls: list[int] = []
+    calls: list[list[int]] = []  # per call, the rows each piece runs (padding included)
     pieces = jax_backend._pieces
 
     def counted(xs):
         out = pieces(xs)
-        calls.append(len(out))
+        calls.append([len(arrays[0]) for _, arrays in out])
         return out
 
     monkeypatch.setattr(jax_backend, "_pieces", counted)
@@ -65,7 +65,7 @@ def test_a_call_of_one_piece_or_less_runs_at_its_own_size(monkeypatch):
     for rows in (1, PIECE, PIECE + 1, 5 * PIECE):
         out = predict({k: v[:rows] for k, v in view.inputs.items()})
         assert out.shape[0] == rows
-    assert calls == [1, 1, 2, 5]
+    assert calls == [[1], [PIECE], [PIECE, PIECE], [PIECE] * 5]
 
 
 def test_the_validation_loss_is_the_mean_of_every_rows_squared_error(monkeypatch):
