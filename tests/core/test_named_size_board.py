@@ -82,3 +82,15 @@ def test_a_named_size_ranks_in_its_own_section(tmp_path, make_record):
         "matched 100000",
         "with mirror=1",
     ]
+
+
+def test_the_command_of_a_record_on_an_earlier_dataset_version_keeps_its_budget(
+    tmp_path, make_record
+):
+    """A `small@v6` record names its preset and, where its budget was not the preset's, the
+    budget (it was left out: the earlier version's presets were not looked up)."""
+    record = make_record()
+    record["dataset"] |= {"id": "hexa-climb-smoke-v6", "preset": "smoke@v6"}
+    record["training"]["config"]["max_epochs"] = 7  # smoke@v6's cap is 3
+    command = run_command(write_record(record, tmp_path / "r.json"))
+    assert " --preset smoke@v6 " in command and command.endswith(" --max-epochs 7")

@@ -9,6 +9,7 @@ from pathlib import Path
 import pytest
 
 from symbench.core.common.errors import SymbenchError
+from symbench.core.config.presets import LEGACY_PRESETS, PRESETS
 from symbench.core.config.provenance import hardware, library_versions
 from symbench.core.runs.results import read_display_record, read_record, seal_of, write_record
 
@@ -90,7 +91,15 @@ def test_an_edited_metric_breaks_the_seal(valid_record, tmp_path):
 
 
 @pytest.mark.parametrize(
-    "field, value", [("robot", "../../x"), ("split", "a/b"), ("model.name", ".hidden")]
+    "field, value",
+    [
+        ("robot", "../../x"),
+        ("split", "a/b"),
+        ("model.name", ".hidden"),
+        ("dataset.preset", "small@v6/../x"),
+        ("dataset.preset", "small@6"),
+        ("split", "iid@v6"),  # only a preset names an earlier version
+    ],
 )
 def test_names_must_be_safe_identifiers(valid_record, tmp_path, field, value):
     record = valid_record()
@@ -101,6 +110,15 @@ def test_names_must_be_safe_identifiers(valid_record, tmp_path, field, value):
     where[last] = value
     with pytest.raises(SymbenchError, match=f"{field}: String should match pattern"):
         write_record(record, tmp_path / "r.json")
+
+
+def test_a_record_takes_every_presets_key_earlier_versions_included(valid_record, tmp_path):
+    """A run on `--preset small@v6` (the v6 board's data and budgets) once trained, evaluated
+    and then failed to write its record, whose preset field refused the '@'."""
+    for name in [*PRESETS, *LEGACY_PRESETS]:
+        record = valid_record()
+        record["dataset"]["preset"] = name
+        assert write_record(record, tmp_path / "r.json").dataset.preset == name
 
 
 def test_schema_1_records_are_shown_but_not_trusted(valid_record, as_schema_1, tmp_path):

@@ -120,6 +120,23 @@ def test_a_small_run_does_not_overwrite_the_smoke_record_of_the_same_model(home,
     )
 
 
+def test_a_sweep_on_an_earlier_dataset_versions_preset_writes_its_records(home, tmp_path):
+    """`sweep --preset small@v6` (the v6 board's data and budgets) once trained and evaluated
+    its first run and then failed to write the record: its preset field refused the '@'."""
+    generate("hexa", "smoke@v6", simulator=fake_simulate, show_progress=False)
+    out, name = tmp_path / "results", key("hexa-climb-smoke-v6", "smoke@v6")
+    result = sweep_command(out, "--robots", "hexa", "--preset", "smoke@v6")
+    assert result.exit_code == 0, result.output
+    assert result.stdout.splitlines() == [
+        "0 of 1 runs already have records; 1 to run",
+        f"finished {name}",
+    ]
+    record = read_record(out / f"{name}.json")
+    assert (record.dataset.id, record.dataset.preset) == ("hexa-climb-smoke-v6", "smoke@v6")
+    again = sweep_command(out, "--robots", "hexa", "--preset", "smoke@v6")
+    assert again.stdout.splitlines() == ["1 of 1 runs already have records; 0 to run"]
+
+
 def test_a_sweep_runs_what_another_presets_record_does_not_hold(home, tmp_path):
     """The issue's case: a smoke record in the folder, `sweep --preset small` of the same
     model once printed '1 of 1 runs already have records; 0 to run'."""

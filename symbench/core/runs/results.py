@@ -16,7 +16,8 @@ keywords set by `--size`, seed);
 run's record at the same path.
 
 Names that end up in file names (robot, split, model, variant, dataset, preset) must be safe
-identifiers, so no record can make publish or leaderboard write outside their folder.
+identifiers (a preset may end in `@vN`, an earlier dataset version's key), so no record can
+make publish or leaderboard write outside their folder.
 Schema-1 records (unsealed, without provenance) are read for display only
 (`read_display_record`); everything that trusts a record uses `read_record`.
 """
@@ -43,6 +44,9 @@ LEGACY_SCHEMA_VERSION = 1  # unsealed, no provenance: shown by `symbench leaderb
 # letters, digits, '.', '_' and '-', not starting with '.': no path separators, no '..'
 IDENTIFIER = r"^[A-Za-z0-9][A-Za-z0-9._-]*$"
 Identifier = Annotated[str, StringConstraints(pattern=IDENTIFIER, max_length=100)]
+# a preset's key: an identifier, or an earlier dataset version's `name@vN` (`small@v6`)
+PRESET_KEY = r"^[A-Za-z0-9][A-Za-z0-9._-]*(@v[0-9]+)?$"
+PresetKey = Annotated[str, StringConstraints(pattern=PRESET_KEY, max_length=100)]
 Sha256 = Annotated[str, StringConstraints(pattern=r"^[0-9a-f]{64}$")]
 
 
@@ -141,7 +145,7 @@ class DatasetInfo(_Strict):
     id: Identifier
     content_hash: Sha256
     robot_spec_hash: str
-    preset: Identifier
+    preset: PresetKey
 
 
 class SampleCounts(_Strict):

@@ -7,7 +7,7 @@ import shlex
 from pathlib import Path
 
 from symbench.core.board.leaderboard import protocol_of
-from symbench.core.config.presets import PRESETS, dataset_id, parse_dataset_id
+from symbench.core.config.presets import LEGACY_PRESETS, PRESETS, dataset_id, parse_dataset_id
 from symbench.core.config.protocols import STEP_BUDGET
 from symbench.core.runs.results import RecordV1
 
@@ -52,9 +52,10 @@ def _budget(record: RecordV1) -> list[str]:
     """--max-steps (converge, cosine) or --max-epochs (paper) when the run's budget was not the
     preset's; schema-1 records kept no budget."""
     config = getattr(record.training, "config", None)
-    if config is None or record.dataset.preset not in PRESETS:
+    known = PRESETS.get(record.dataset.preset) or LEGACY_PRESETS.get(record.dataset.preset)
+    if config is None or known is None:
         return []
-    budget = PRESETS[record.dataset.preset].training
+    budget = known.training
     if config.protocol in STEP_BUDGET and config.max_steps != budget.max_steps:
         return ["--max-steps", str(config.max_steps)]
     if config.protocol == "paper" and config.max_epochs != budget.max_epochs:
