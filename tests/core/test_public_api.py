@@ -114,6 +114,10 @@ def _model(**change):
         ({"backend": "tensorflow"}, "model 'm': backend 'tensorflow' is not one of torch, jax"),
         ({"name": "my model"}, "model name 'my model' is not a name"),
         ({"name": "a/b"}, "model name 'a/b' is not a name"),
+        # a record could not hold these: the run would fail only when writing it
+        ({"name": "sdnn+aug"}, "model name 'sdnn+aug' is not a name"),
+        ({"name": "m" * 101}, f"model name '{'m' * 101}' is not a name: use at most 100"),
+        ({"name": "m\n"}, "model name 'm\\n' is not a name"),
         ({"equivariant": "yes"}, "model 'm': equivariant must be True or False"),
         ({"version": 0}, "model 'm': version must be a positive integer, got 0"),
         ({"version": True}, "model 'm': version must be a positive integer, got True"),

@@ -10,13 +10,13 @@ deep inside a training run.
 from __future__ import annotations
 
 import os
-import re
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field, fields
 from pathlib import Path
 from typing import Any
 
 from symbench.core.common.errors import SymbenchError
+from symbench.core.common.identifiers import IDENTIFIER_LENGTH, is_identifier
 
 # The vocabulary shared by plugins and the core (the data schema keys its layouts by these).
 BACKENDS = ("torch", "jax")
@@ -32,18 +32,16 @@ EVALUATOR_NEEDS = (
     "contact",  # contact flags that are known, not declared unknown by an import
 )
 
-_NAME = re.compile(r"[A-Za-z0-9][A-Za-z0-9_.+-]*")
-
 
 class InvalidEntryError(SymbenchError, ValueError):
     """An entry whose fields cannot work; raised when the entry is made."""
 
 
 def _check_name(kind: str, name: object) -> None:
-    if not isinstance(name, str) or not _NAME.fullmatch(name):
+    if not isinstance(name, str) or not is_identifier(name):
         raise InvalidEntryError(
-            f"{kind} name {name!r} is not a name: use letters, digits and . _ + - "
-            "(no spaces or slashes)"
+            f"{kind} name {name!r} is not a name: use at most {IDENTIFIER_LENGTH} letters, "
+            "digits and . _ - (no spaces or slashes), starting with a letter or digit"
         )
 
 

@@ -34,6 +34,7 @@ from pydantic import BaseModel, ConfigDict, Field, StringConstraints, Validation
 
 from symbench.core.common.atomic import write_text_atomic
 from symbench.core.common.errors import SymbenchError
+from symbench.core.common.identifiers import IDENTIFIER, IDENTIFIER_LENGTH, PRESET_KEY
 from symbench.core.common.jsonfile import parse_json
 from symbench.core.common.validation import explain
 from symbench.core.config.protocols import Protocol, StoppedBy
@@ -41,12 +42,8 @@ from symbench.core.config.protocols import Protocol, StoppedBy
 RECORD_SCHEMA_VERSION: Final = 2
 LEGACY_SCHEMA_VERSION = 1  # unsealed, no provenance: shown by `symbench leaderboard` only
 
-# letters, digits, '.', '_' and '-', not starting with '.': no path separators, no '..'
-IDENTIFIER = r"^[A-Za-z0-9][A-Za-z0-9._-]*$"
-Identifier = Annotated[str, StringConstraints(pattern=IDENTIFIER, max_length=100)]
-# a preset's key: an identifier, or an earlier dataset version's `name@vN` (`small@v6`)
-PRESET_KEY = r"^[A-Za-z0-9][A-Za-z0-9._-]*(@v[0-9]+)?$"
-PresetKey = Annotated[str, StringConstraints(pattern=PRESET_KEY, max_length=100)]
+Identifier = Annotated[str, StringConstraints(pattern=IDENTIFIER, max_length=IDENTIFIER_LENGTH)]
+PresetKey = Annotated[str, StringConstraints(pattern=PRESET_KEY, max_length=IDENTIFIER_LENGTH)]
 Sha256 = Annotated[str, StringConstraints(pattern=r"^[0-9a-f]{64}$")]
 
 

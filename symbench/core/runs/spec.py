@@ -9,12 +9,12 @@ the run's key (`results.run_key`), which holds both.
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 from symbench.core.common.errors import SymbenchError, UnknownNameError
+from symbench.core.common.identifiers import is_identifier
 from symbench.core.config.presets import dataset_id, parse_dataset_id, preset
 from symbench.core.data.dataset import Dataset, load_dataset, missing_hint
 from symbench.core.data.generation.generate import ensure_dataset as ensure
@@ -22,7 +22,7 @@ from symbench.core.data.storage.metadata import METADATA, dataset_dir, read_meta
 from symbench.core.data.views.schema import VARIANTS
 from symbench.core.plugin import registry
 from symbench.core.plugin.entries import ModelEntry
-from symbench.core.runs.results import IDENTIFIER, run_key
+from symbench.core.runs.results import run_key
 
 if TYPE_CHECKING:
     from symbench.core.training.config import TrainConfig
@@ -136,7 +136,7 @@ def default_preset(did: str | None) -> str:
 def dataset_robot(did: str) -> str:
     """The robot whose trajectories dataset `did` holds: its metadata's when it is cached, a
     standard id's robot otherwise; an error for any other id missing from the cache."""
-    if not re.match(IDENTIFIER, did) or len(did) > 100:
+    if not is_identifier(did):
         raise SymbenchError(
             f"dataset id '{did}' cannot name a result record (at most 100 letters, digits, "
             "'.', '_' and '-', not starting with '.')"
