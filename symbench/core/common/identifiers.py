@@ -11,7 +11,7 @@ import re
 IDENTIFIER = r"^[A-Za-z0-9][A-Za-z0-9._-]*$"
 IDENTIFIER_LENGTH = 100
 # a preset's key: an identifier, or an earlier dataset version's `name@vN` (`small@v6`)
-PRESET_KEY = r"^[A-Za-z0-9][A-Za-z0-9._-]*(@v[0-9]+)?$"
+PRESET_KEY = IDENTIFIER.removesuffix("$") + r"(@v[0-9]+)?$"
 
 
 def is_identifier(name: str) -> bool:

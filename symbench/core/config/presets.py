@@ -327,9 +327,15 @@ LEGACY_PRESETS: dict[str, Preset] = _with_noisy(
 )
 
 
+def known_preset(name: str) -> Preset | None:
+    """A preset by key (a current one by name, an earlier version's as `name@vN`), or None
+    for a key this code does not know (a record made by other code may name one)."""
+    return PRESETS.get(name) or LEGACY_PRESETS.get(name)
+
+
 def preset(name: str) -> Preset:
-    """A preset by key: a current one by name, an earlier version's as `name@vN`."""
-    found = PRESETS.get(name) or LEGACY_PRESETS.get(name)
+    """`known_preset(name)`, or an error naming the known presets."""
+    found = known_preset(name)
     if found is None:
         raise UnknownNameError("preset", name, PRESETS)
     return found
@@ -350,4 +356,4 @@ def parse_dataset_id(dataset_id_: str) -> tuple[str, str] | None:
     if not (robot and climb and dash and version.startswith("v")):
         return None
     key = name if version == f"v{DATASET_VERSION}" else f"{name}@{version}"
-    return (robot, key) if key in PRESETS or key in LEGACY_PRESETS else None
+    return (robot, key) if known_preset(key) is not None else None

@@ -14,7 +14,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from symbench.core.common.errors import SymbenchError, UnknownNameError
-from symbench.core.common.identifiers import is_identifier
+from symbench.core.common.identifiers import IDENTIFIER_LENGTH, is_identifier
 from symbench.core.config.presets import dataset_id, parse_dataset_id, preset
 from symbench.core.data.dataset import Dataset, load_dataset, missing_hint
 from symbench.core.data.generation.generate import ensure_dataset as ensure
@@ -138,8 +138,8 @@ def dataset_robot(did: str) -> str:
     standard id's robot otherwise; an error for any other id missing from the cache."""
     if not is_identifier(did):
         raise SymbenchError(
-            f"dataset id '{did}' cannot name a result record (at most 100 letters, digits, "
-            "'.', '_' and '-', not starting with '.')"
+            f"dataset id '{did}' cannot name a result record (at most {IDENTIFIER_LENGTH} "
+            "letters, digits, '.', '_' and '-', not starting with '.')"
         )
     if (dataset_dir(did) / METADATA).is_file():
         return str(read_metadata(did, missing_hint(did))[1]["robot"])

@@ -7,7 +7,7 @@ import shlex
 from pathlib import Path
 
 from symbench.core.board.leaderboard import protocol_of
-from symbench.core.config.presets import LEGACY_PRESETS, PRESETS, dataset_id, parse_dataset_id
+from symbench.core.config.presets import PRESETS, dataset_id, known_preset, parse_dataset_id
 from symbench.core.config.protocols import STEP_BUDGET
 from symbench.core.runs.results import RecordV1
 
@@ -52,7 +52,7 @@ def _budget(record: RecordV1) -> list[str]:
     """--max-steps (converge, cosine) or --max-epochs (paper) when the run's budget was not the
     preset's; schema-1 records kept no budget."""
     config = getattr(record.training, "config", None)
-    known = PRESETS.get(record.dataset.preset) or LEGACY_PRESETS.get(record.dataset.preset)
+    known = known_preset(record.dataset.preset)
     if config is None or known is None:
         return []
     budget = known.training
