@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import dataclasses
+import hashlib
 import json
 
 import numpy as np
@@ -100,3 +101,23 @@ def test_rehashed_metadata_whose_step_count_disagrees_with_the_files_is_refused(
         SymbenchError, match=rf"{file} holds {steps + 40} steps, metadata.json says {steps}"
     ):
         load_dataset(smoke_hexa.dataset_id)
+
+
+def test_rehashed_metadata_of_a_file_whose_column_name_is_no_utf8_names_the_file(smoke_hexa):
+    """Before: "internal error: UnicodeDecodeError" from counting the file's steps, which
+    decodes the footer's column names (found by the property suite: one byte of a cached
+    trajectory changed and its digest written into metadata.json)."""
+    path = smoke_hexa.root / METADATA
+    meta = json.loads(path.read_text())
+    record = meta["trajectories"][0]
+    file = smoke_hexa.root / record["file"]
+    content = file.read_bytes().replace(b"tau.leg3.femur", b"tau.leg3.\x80emur")
+    file.write_bytes(content)
+    record["sha256"] = hashlib.sha256(content).hexdigest()
+    meta["content_hash"] = content_hash(meta)
+    path.write_text(json.dumps(meta))
+    result = invoke("data", "info", smoke_hexa.dataset_id, "--no-overlap")
+    assert error_line(result, 1) == (
+        f"Error: {file}: not a readable Parquet file ('utf-8' codec can't decode byte 0x80 in "
+        "position 9: invalid start byte)"
+    )

@@ -81,7 +81,8 @@ def step_count(path: Path) -> int:
 
     try:
         return pq.read_metadata(path).num_rows
-    except (OSError, pa.ArrowException) as exc:
+    # the footer's column names are decoded here too (UnicodeDecodeError, a ValueError)
+    except (OSError, ValueError, pa.ArrowException) as exc:
         raise SymbenchError(f"{path}: not a readable Parquet file ({one_line(exc)})") from None
 
 
