@@ -11,10 +11,11 @@ their export (`symbench export`: what a controller outside Python would call).
 
 The limit is one honest denominator per thread setting: the best dense-matmul rate either
 backend reaches with that setting's cores, measured in the same process as the rows (see
-`models_worker`). One thread is how a sweep runs each job, all cores how `symbench run`
-trains. Latency is measured in the setting with the fewest threads only: a batch-1 call's
-matrices are far too small to split among threads, so a second figure would cost a timing
-window per row and mode and say nothing new.
+`models_worker`). One thread is how a sweep runs each job; all cores is how `symbench run`
+trains in JAX (torch trains there on one thread, `SYMBENCH_TORCH_THREADS`, and the second core
+trains the closed loop's model). Latency is measured in the setting with the fewest threads
+only: a batch-1 call's matrices are far too small to split among threads, so a second figure
+would cost a timing window per row and mode and say nothing new.
 """
 
 from __future__ import annotations
