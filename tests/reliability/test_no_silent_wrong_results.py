@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import dataclasses
-import hashlib
 import json
 
 import numpy as np
@@ -16,6 +15,7 @@ from symbench.core.common.errors import SymbenchError
 from symbench.core.config.protocols import Converge
 from symbench.core.data import load_dataset
 from symbench.core.data.importing.importer import import_logs
+from symbench.core.data.storage.files import sha256_bytes
 from symbench.core.data.storage.metadata import METADATA, content_hash
 from symbench.core.runs import runner
 from symbench.core.runs.cli import run as run_command
@@ -111,9 +111,11 @@ def test_rehashed_metadata_of_a_file_whose_column_name_is_no_utf8_names_the_file
     meta = json.loads(path.read_text())
     record = meta["trajectories"][0]
     file = smoke_hexa.root / record["file"]
-    content = file.read_bytes().replace(b"tau.leg3.femur", b"tau.leg3.\x80emur")
+    original = file.read_bytes()
+    content = original.replace(b"tau.leg3.femur", b"tau.leg3.\x80emur")
+    assert content != original  # the footer names its columns
     file.write_bytes(content)
-    record["sha256"] = hashlib.sha256(content).hexdigest()
+    record["sha256"] = sha256_bytes(content)
     meta["content_hash"] = content_hash(meta)
     path.write_text(json.dumps(meta))
     result = invoke("data", "info", smoke_hexa.dataset_id, "--no-overlap")
