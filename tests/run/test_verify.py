@@ -7,6 +7,7 @@ clean one, since this test may run in a working tree with uncommitted changes.
 
 from __future__ import annotations
 
+import importlib
 import json
 from pathlib import Path
 
@@ -91,6 +92,20 @@ def test_an_edited_and_resealed_metric_is_named(records, tmp_path):
     text = verify(str(path))
     assert text.exit_code == 1
     assert "1 of 6 values disagree: torque-error.rmse" in " ".join(text.stdout.split())
+
+
+def test_the_summary_names_the_first_disagreements_and_counts_the_rest(
+    records, tmp_path, monkeypatch
+):
+    """A record made in another kernel class disagrees in hundreds of values: the summary
+    line names the first few (the table lists every one), not all of them."""
+    monkeypatch.setattr(importlib.import_module("symbench.core.runs.cli.verify"), "SHOWN", 2)
+    path = resealed(records[0], tmp_path, lambda m: m.update({k: v + 1 for k, v in m.items()}))
+    text = " ".join(verify(str(path)).stdout.split())
+    names = list(read_record(records[0]).metrics["torque-error"])  # in the record's order
+    first = ", ".join(f"torque-error.{n}" for n in names[:2])
+    assert f"6 of 6 values disagree: {first} and 4 more" in text
+    assert f"torque-error.{names[2]} " not in text.split("values disagree")[-1]
 
 
 def test_a_metric_added_since_the_record_is_listed_not_failed(records, tmp_path):

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import difflib
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from typing import Any
 
 
@@ -25,6 +25,13 @@ class UnknownNameError(SymbenchError, KeyError):
         hint = f"; did you mean {', '.join(close)}?" if close else ""
         known = ", ".join(self.valid) if self.valid else "none registered"
         super().__init__(f"unknown {what} '{name}'{hint} (known: {known})")
+
+
+def first_of(names: Sequence[str], shown: int) -> str:
+    """The first `shown` names and how many more: a message that names every one of a
+    thousand would hide the line it is on."""
+    more = f" and {len(names) - shown} more" if len(names) > shown else ""
+    return ", ".join(names[:shown]) + more
 
 
 def lookup(what: str, name: str, table: dict[str, Any]) -> Any:

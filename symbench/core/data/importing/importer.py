@@ -26,7 +26,7 @@ from typing import Any
 import numpy as np
 
 from symbench.core.common.atomic import replace_folder, staging_folder, write_bytes_atomic
-from symbench.core.common.errors import SymbenchError
+from symbench.core.common.errors import SymbenchError, first_of
 from symbench.core.config.presets import RECORD_PERIOD
 from symbench.core.data.dataset import Dataset, load_dataset
 from symbench.core.data.importing.derive import DERIVABLE, resample, resample_plan
@@ -130,7 +130,7 @@ class ImportPlan:
 def _count(files: list[str], total: int) -> str:
     if len(files) == total and total > 1:
         return f"all {total} files"
-    return ", ".join(files[:3]) + (f" and {len(files) - 3} more" if len(files) > 3 else "")
+    return first_of(files, 3)
 
 
 Prepared = tuple[ImportPlan, list[tuple[dict[str, np.ndarray], int, dict[str, Any], str]]]

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import numpy as np
 
-from symbench.core.common.errors import SymbenchError
+from symbench.core.common.errors import SymbenchError, first_of
 from symbench.core.data.importing.derive import DERIVABLE, UNKNOWABLE, body_to_world, derivative
 from symbench.core.data.importing.manifest import IMPORT_JSON, ImportManifest
 from symbench.core.data.storage.columns import check_flags, flat_names, legs_in
@@ -42,8 +42,7 @@ def read_log_file(path: Path, n_legs: int, robot: str) -> tuple[dict[str, np.nda
                 arrays[col.name] = stacked.reshape(len(stacked), *column_shape(col, n_legs))
             elif any(have):
                 missing = [name for name, ok in zip(names, have, strict=True) if not ok]
-                more = f" and {len(missing) - 5} more" if len(missing) > 5 else ""
-                raise SymbenchError(f"{path}: missing column(s) {', '.join(missing[:5])}{more}")
+                raise SymbenchError(f"{path}: missing column(s) {first_of(missing, 5)}")
         return arrays, sorted(set(columns) - known)
     arrays = read_npz(path)
     extra = sorted(k for k in arrays if k not in COLUMN_NAMES)

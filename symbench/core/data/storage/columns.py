@@ -12,7 +12,7 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from symbench.core.common.errors import SymbenchError
+from symbench.core.common.errors import SymbenchError, first_of
 from symbench.core.sim.raw import RAW_COLUMNS, RawColumn, column_shape
 
 JOINTS = ("coxa", "femur", "tibia")  # a leg's joints, in column and feature order
@@ -52,8 +52,7 @@ def unflatten(columns: Mapping[str, np.ndarray], n_legs: int, source: str) -> di
     """Scalar columns -> shaped raw arrays; names the first missing columns if any."""
     missing = [n for n in all_flat_names(n_legs) if n not in columns]
     if missing:
-        more = f" and {len(missing) - 5} more" if len(missing) > 5 else ""
-        raise SymbenchError(f"{source}: missing column(s) {', '.join(missing[:5])}{more}")
+        raise SymbenchError(f"{source}: missing column(s) {first_of(missing, 5)}")
     out = {}
     for col in RAW_COLUMNS:
         names = flat_names(col, n_legs)

@@ -14,7 +14,7 @@ from typing import Any
 
 from pydantic import ValidationError
 
-from symbench.core.common.errors import SymbenchError
+from symbench.core.common.errors import SymbenchError, first_of
 from symbench.core.common.hashing import sha256_file
 from symbench.core.common.jsonfile import read_json
 from symbench.core.common.paths import datasets_dir
@@ -128,7 +128,7 @@ def verify(root: Path, meta: dict[str, Any]) -> None:
     a re-hashed metadata.json could misstate while naming the right file)."""
     bad = damaged_files(root, meta)
     if bad:
-        shown = ", ".join(bad[:3]) + (f" and {len(bad) - 3} more" if len(bad) > 3 else "")
+        shown = first_of(bad, 3)
         raise SymbenchError(
             f"dataset '{meta['id']}': {shown} changed, truncated or missing "
             f"(SHA-256 mismatch); fix it with: {_repair(meta)}"

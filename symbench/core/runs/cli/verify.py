@@ -11,7 +11,7 @@ from rich.table import Table
 
 from symbench.core.common.cli_types import NON_NEGATIVE, WORKERS
 from symbench.core.common.console import StdoutConsole
-from symbench.core.common.errors import SymbenchError
+from symbench.core.common.errors import SymbenchError, first_of
 from symbench.core.runs.results import read_record
 from symbench.core.runs.verify import (
     ATOL,
@@ -21,6 +21,8 @@ from symbench.core.runs.verify import (
     kernel_class_warning,
     verify_record,
 )
+
+SHOWN = 10  # names in the summary line; the table above it lists every value
 
 
 def _table(result: Verification) -> Table:
@@ -89,13 +91,13 @@ def verify(
             console.print(
                 f"{result.path}: "
                 + (
-                    f"{len(bad)} of {n} values disagree: {', '.join(bad)}"
+                    f"{len(bad)} of {n} values disagree: {first_of(bad, SHOWN)}"
                     if bad
                     else f"all {n} values agree"
                 )
                 + (
                     f"; {len(new)} values reported today are not in the record (added since it "
-                    f"was made, not compared): {', '.join(new)}"
+                    f"was made, not compared): {first_of(new, SHOWN)}"
                     if new
                     else ""
                 ),
