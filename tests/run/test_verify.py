@@ -105,7 +105,6 @@ def test_the_summary_names_the_first_disagreements_and_counts_the_rest(
     names = list(read_record(records[0]).metrics["torque-error"])  # in the record's order
     first = ", ".join(f"torque-error.{n}" for n in names[:2])
     assert f"6 of 6 values disagree: {first} and 4 more" in text
-    assert f"torque-error.{names[2]} " not in text.split("values disagree")[-1]
 
 
 def test_a_metric_added_since_the_record_is_listed_not_failed(records, tmp_path):
